@@ -17,7 +17,11 @@
  * 2-norm at most 0.5: M stays positive definite), so that D_h and the receptance G_h on the
  * contacts are dense, as a ROM's. Rayleigh damping C = 0.02/√S K. Each node has a contact_3d
  * element to the ground (kt 20, μ 0.25, kn 50, n0 4, N = n0 + kn z); its Jenkins twin two
- * jenkins elements on x and y (kt 20, slip force μ n0). Forced at the last node with m/4 times
+ * jenkins elements on x and y (kt 20, slip force μ n0); its normal twin two jenkins_normal
+ * elements on (x, z) and (y, z), each kt 20, 2 μ, kn/2, n0/2: together the contact's normal law
+ * N = max(0, n0 + kn z), and a slip force μ N on each axis that follows it, where the Jenkins
+ * twin's stays μ n0 (a square around the contact's disk of radius μ N). Forced at the last node
+ * with m/4 times
  *   preload  2 cos Ωt on x, 1.2 sin Ωt on y (the normal forces stay near n0: no lift-off)
  *   liftoff  as preload and 30 cos Ωt on z (the last contacts open in each period)
  * at Ω = 0.8 (below the first resonance) and 1.0 (near it).
@@ -26,7 +30,7 @@
  * from q = 0, the first with D_h's factors and the condensation G_h, the second without.
  *
  * Usage: fricreg-bench-hb-interface-rom [m ...] [--load preload|liftoff]
- *        [--elements contact_3d|jenkins] [--omega 0.8|1.0] [--budget s] [--sweep] [--trace]
+ *        [--elements contact_3d|jenkins|jenkins_normal] [--omega 0.8|1.0] [--budget s] [--sweep] [--trace]
  * default m = 16 32 85 232, every load, element type and frequency. --budget stops a solve
  * without a guess after s CPU seconds (its status then the monitor's stop); --sweep continues
  * from the point at 0.8 to 1.6 through the first resonance with the defaults (points,
@@ -47,6 +51,11 @@
 #define MODAL 163
 static const double PI = 3.14159265358979323846, KT = 20.0, MU = 0.25, KN = 50.0, N0 = 4.0;
 static const double OMEGAS[] = {0.8, 1.0}, W_END = 1.6;
+
+/* The models of the interface: its contacts, their Jenkins and normal twins. */
+enum kind { CONTACT, JENKINS, NORMAL_TWIN, KINDS };
+static const char *const KIND_NAMES[KINDS] = {"contact_3d", "jenkins", "jenkins_normal"};
+static const size_t ELEMENTS_A_NODE[KINDS] = {1, 2, 2}, ROWS[KINDS] = {3, 1, 2};
 
 struct load {
     const char *name;
@@ -132,10 +141,10 @@ static void model(size_t m, double *M, double *K, double *s)
     }
 }
 
-/* The driver of m contacts (contact) or 2 m Jenkins elements under load ld; NULL on failure. */
-static fricreg_hb *build(size_t m, const struct load *ld, int contact, long *steps)
+/* The driver of model k of m nodes under load ld; NULL on failure. */
+static fricreg_hb *build(size_t m, const struct load *ld, enum kind k, long *steps)
 {
-    size_t nb = 3 * m, n = nb + MODAL, me = contact ? m : 2 * m, rows = contact ? 3 : 1;
+    size_t nb = 3 * m, n = nb + MODAL, me = ELEMENTS_A_NODE[k] * m, rows = ROWS[k];
     double *M = calloc(n * n, sizeof(double)), *K = calloc(n * n, sizeof(double));
     double *pc = calloc(n, sizeof(double)), *ps = calloc(n, sizeof(double));
     double *J = calloc(me * rows * n, sizeof(double)), *p = calloc(5 * me, sizeof(double)), S;
@@ -144,15 +153,21 @@ static fricreg_hb *build(size_t m, const struct load *ld, int contact, long *ste
     if (status == FRICREG_OK) {
         model(m, M, K, &S);
         for (size_t e = 0; e < me; e++) {
-            if (contact) {
+            size_t node = e / ELEMENTS_A_NODE[k], axis = e % 2; /* twins: x (even e) or y */
+            if (k == CONTACT) {
                 double q[5] = {KT, MU, KN, N0, 0.0};
                 memcpy(p + 5 * e, q, sizeof q);
                 for (size_t r = 0; r < 3; r++)
                     J[(3 * e + r) * n + 3 * e + r] = 1.0;
-            } else { /* element e on node e / 2, x (even e) or y */
+            } else if (k == JENKINS) {
                 p[2 * e] = KT;
                 p[2 * e + 1] = MU * N0;
-                J[e * n + 3 * (e / 2) + e % 2] = 1.0;
+                J[e * n + 3 * node + axis] = 1.0;
+            } else {
+                double q[5] = {KT, 2.0 * MU, KN / 2.0, N0 / 2.0, 0.0};
+                memcpy(p + 5 * e, q, sizeof q);
+                J[2 * e * n + 3 * node + axis] = 1.0;
+                J[(2 * e + 1) * n + 3 * node + 2] = 1.0;
             }
         }
         double scale = (double)m / 4.0;
@@ -170,9 +185,7 @@ static fricreg_hb *build(size_t m, const struct load *ld, int contact, long *ste
     if (status == FRICREG_OK)
         status = fricreg_hb_set_excitation(hb, n, pc, ps);
     if (status == FRICREG_OK)
-        status = fricreg_hb_add_elements(hb,
-                                         fricreg_element_lookup(contact ? "contact_3d" : "jenkins"),
-                                         me, n, J, p);
+        status = fricreg_hb_add_elements(hb, fricreg_element_lookup(KIND_NAMES[k]), me, n, J, p);
     if (status == FRICREG_OK)
         status = fricreg_hb_set_monitor(hb, count_steps, steps);
     if (status != FRICREG_OK) {
@@ -208,13 +221,13 @@ static double least_normal(fricreg_hb *hb, size_t m)
 }
 
 /* One model at each frequency: one line each; 1 on a failed solve. */
-static int run(size_t m, const struct load *ld, int contact)
+static int run(size_t m, const struct load *ld, enum kind k)
 {
     long steps = 0;
-    fricreg_hb *hb = build(m, ld, contact, &steps);
+    fricreg_hb *hb = build(m, ld, k, &steps);
     if (hb == NULL)
         return 1;
-    size_t nq = (contact ? 3 : 2) * m * NC;
+    size_t nq = ELEMENTS_A_NODE[k] * ROWS[k] * m * NC;
     double *q = malloc(nq * sizeof(double));
     int failed = q == NULL;
     for (size_t w = 0; q != NULL && w < sizeof OMEGAS / sizeof OMEGAS[0]; w++) {
@@ -229,7 +242,7 @@ static int run(size_t m, const struct load *ld, int contact)
         if (status != FRICREG_OK)
             snprintf(why, sizeof why, "%s", fricreg_hb_errmsg(hb));
         if (status == FRICREG_OK) {
-            least = contact ? least_normal(hb, m) : NAN;
+            least = k != JENKINS ? least_normal(hb, m) : NAN;
             steps = 0;
             t0 = bench_cpu_seconds();
             fricreg_hb_solve(hb, OMEGAS[w], nq, q, q);
@@ -247,8 +260,8 @@ static int run(size_t m, const struct load *ld, int contact)
         pieces(hb, OMEGAS[w] * (1.0 + 1e-4), nq, q, &tf, &ti);
         printf("%5zu %5zu %6zu %-8s %-10s %4.2f | %2d %5ld %9.3f | %8.3f | %8.3f %8.3f | %8.1f "
                "| %7.3f\n",
-               m, 3 * m + MODAL, nq, ld->name, contact ? "contact_3d" : "jenkins", OMEGAS[w],
-               status, ss, ts, ta, tf, ti, peak_mib(), least);
+               m, 3 * m + MODAL, nq, ld->name, KIND_NAMES[k], OMEGAS[w], status, ss, ts, ta, tf, ti,
+               peak_mib(), least);
         if (status != FRICREG_OK)
             printf("      %s\n", why);
         fflush(stdout);
@@ -290,12 +303,11 @@ int main(int argc, char **argv)
     printf("%5s %5s %6s %-8s %-10s %4s\n", "m", "dofs", "nq", "load", "elements", "Omega");
     for (size_t i = 0; i < count; i++)
         for (size_t l = 0; l < sizeof LOADS / sizeof LOADS[0]; l++)
-            for (int contact = 1; contact >= 0; contact--) {
+            for (enum kind k = CONTACT; k < KINDS; k++) {
                 if ((only_load && strcmp(only_load, LOADS[l].name) != 0) ||
-                    (only_elements &&
-                     strcmp(only_elements, contact ? "contact_3d" : "jenkins") != 0))
+                    (only_elements && strcmp(only_elements, KIND_NAMES[k]) != 0))
                     continue;
-                failed |= run(ms[i], &LOADS[l], contact);
+                failed |= run(ms[i], &LOADS[l], k);
             }
     return failed;
 }
