@@ -10,7 +10,11 @@ if(NOT FRICREG_PETSC STREQUAL "OFF")
   if(PKG_CONFIG_FOUND)
     pkg_check_modules(PETSC QUIET IMPORTED_TARGET PETSc)
   endif()
-  find_package(MPI QUIET COMPONENTS C)
+  # MPI only beside PETSc: a machine with MPI's runtime but not its headers (Octave pulls
+  # Open MPI's libraries in) fails FindMPI's trial compile, which is an error even when QUIET
+  if(PETSC_FOUND)
+    find_package(MPI QUIET COMPONENTS C)
+  endif()
   if(PETSC_FOUND AND MPI_C_FOUND)
     set(FRICREG_PETSC_BUILT ON)
   elseif(FRICREG_PETSC STREQUAL "ON")

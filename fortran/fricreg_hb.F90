@@ -47,6 +47,7 @@ module fricreg_hb_m
     procedure :: set_excitation => hb_set_excitation
     procedure :: set_newton => hb_set_newton
     procedure :: set_newton_solver => hb_set_newton_solver
+    procedure :: set_receptance => hb_set_receptance
     procedure :: set_continuation => hb_set_continuation
     procedure :: set_monitor => hb_set_monitor
     procedure :: set_max_iterations => hb_set_max_iterations
@@ -514,6 +515,18 @@ contains
     if (status == FRICREG_OK) &
       status = self%record(fricreg_hb_set_newton_solver(self%ptr, int(solver, c_int)))
   end function hb_set_newton_solver
+
+  !> How D_h's receptances are solved (fricreg_hb_set_receptance): FRICREG_HB_RECEPTANCE_AUTO
+  !> (the default: through the modes of (K, M) from 200 dofs where the damping is Rayleigh's),
+  !> _LU (1.9's) or _MODES. FRICREG_EINVAL for another value. Since 1.10.
+  function hb_set_receptance(self, method) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    integer, intent(in) :: method
+    integer(c_int) :: status
+    status = self%ready('set_receptance', 'HB driver')
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_hb_set_receptance(self%ptr, int(method, c_int)))
+  end function hb_set_receptance
 
   !> Install a monitor (a bind(C) function with interface fricreg_hb_monitor), called before
   !> every Newton step of every solve; user is passed back to it. With no monitor, removes it

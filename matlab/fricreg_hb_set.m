@@ -11,6 +11,10 @@ function fricreg_hb_set(h, varargin)
 %                      512 unknowns where few rows of the elements' Jacobian are off its
 %                      diagonal), 'dense' (LAPACK's LU, 1.9's) or 'capacitance'; the results
 %                      agree to rounding.
+%      'receptance'    how D_h = K - (h Omega)^2 M + i h Omega C is solved at each frequency:
+%                      'auto' (default: through the modes of (K, M) from 200 dofs where the
+%                      damping is Rayleigh's), 'lu' (LAPACK's LU of each D_h, 1.9's) or
+%                      'modes'; the results agree to rounding.
 %      'continuation'  [ds ds_min ds_max max_points]: the step in the scaled arclength
 %                      (ds_min <= ds <= ds_max <= 1) and the most points stored (>= 2).
 %                      Defaults [0.02 1e-6 0.1 2000].
@@ -28,11 +32,11 @@ function fricreg_hb_set(h, varargin)
 %      fricreg:option      an unknown name, or one without its value
 %      fricreg:size        a vector of the wrong length
 %      fricreg:EINVAL      a value out of its range (the message names it); an unknown method
-%                          or solver
+%                          solver or receptance
 %      fricreg:ENONFINITE  a NaN or infinite value
 %
 %   Source: fricreg_hb_set_excitation, fricreg_hb_set_newton, fricreg_hb_set_newton_solver,
-%   fricreg_hb_set_continuation,
+%   fricreg_hb_set_receptance, fricreg_hb_set_continuation,
 %   fricreg_hb_set_stability_method, fricreg_hb_set_stability, fricreg_hb_set_max_iterations
 %   (include/fricreg_hb.h), through fricreg_mex (matlab/mex_hb.c). Python:
 %   HarmonicBalance.set_excitation, .set_newton, .set_continuation, .set_stability (Python's
@@ -71,6 +75,8 @@ for k = 1:2:numel(varargin)
         fricreg_mex('hb_set_newton', h, v(1), v(2));
     case 'solver'
         fricreg_mex('hb_set_newton_solver', h, value);
+    case 'receptance'
+        fricreg_mex('hb_set_receptance', h, value);
     case 'continuation'
         v = vector(value, 4, name, '[ds ds_min ds_max max_points]');
         fricreg_mex('hb_set_continuation', h, v(1), v(2), v(3), v(4));
@@ -85,7 +91,8 @@ for k = 1:2:numel(varargin)
         fricreg_mex('hb_set_max_iterations', h, value);
     otherwise
         error('fricreg:option', ['fricreg_hb_set: unknown option ''%s'' (excitation, newton, ' ...
-                                 'solver, continuation, stability, method, max_iterations)'], name);
+                                 'solver, receptance, continuation, stability, method, ' ...
+                                 'max_iterations)'], name);
     end
 end
 if ~isempty(method)

@@ -388,6 +388,7 @@ static const struct {
     {"hb_set_excitation", mexhb_set_excitation},
     {"hb_set_newton", mexhb_set_newton},
     {"hb_set_newton_solver", mexhb_set_newton_solver},
+    {"hb_set_receptance", mexhb_set_receptance},
     {"hb_set_continuation", mexhb_set_continuation},
     {"hb_set_stability", mexhb_set_stability},
     {"hb_set_max_iterations", mexhb_set_max_iterations},

@@ -259,6 +259,20 @@ void mexhb_set_newton_solver(int nlhs, mxArray *plhs[], int nrhs, const mxArray 
                 cmd);
 }
 
+/* hb_set_receptance(h, method): method 'auto', 'lu' or 'modes' (enum fricreg_hb_receptance's
+ * order). */
+void mexhb_set_receptance(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
+{
+    static const char *const methods[] = {"auto", "lu", "modes"};
+    const char *cmd = "hb_set_receptance";
+    mexhb *d;
+    (void)plhs;
+    mexa_nargs(cmd, nrhs, 2, 2, nlhs, 0);
+    d = mexhb_of(prhs[0], cmd);
+    mexhb_check(d, fricreg_hb_set_receptance(d->hb, mexa_pick(prhs[1], cmd, "method", methods, 3)),
+                cmd);
+}
+
 /* hb_set_continuation(h, ds, ds_min, ds_max, max_points) */
 void mexhb_set_continuation(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
 {

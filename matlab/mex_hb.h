@@ -34,9 +34,9 @@ void mexhb_free(void *object);
 
 mex_command mexhb_create, mexhb_set_matrix, mexhb_set_rayleigh, mexhb_set_jenkins,
     mexhb_add_elements, mexhb_set_excitation, mexhb_set_newton, mexhb_set_newton_solver,
-    mexhb_set_continuation, mexhb_set_stability, mexhb_set_max_iterations, mexhb_set_element_param,
-    mexhb_get_element_param, mexhb_info, mexhb_solve, mexhb_continue, mexhb_continue_level,
-    mexhb_nma, mexhb_peak, mexhb_truncation_error, mexhb_nma_sensitivities,
+    mexhb_set_receptance, mexhb_set_continuation, mexhb_set_stability, mexhb_set_max_iterations,
+    mexhb_set_element_param, mexhb_get_element_param, mexhb_info, mexhb_solve, mexhb_continue,
+    mexhb_continue_level, mexhb_nma, mexhb_peak, mexhb_truncation_error, mexhb_nma_sensitivities,
     mexhb_modal_participation;
 
 #endif

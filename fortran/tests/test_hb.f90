@@ -102,6 +102,8 @@ program test_hb
   call check_status(hb%set_newton_solver(7), FRICREG_EINVAL, 'set_newton_solver 7')
   call check_status(hb%set_newton_solver(FRICREG_HB_NEWTON_DENSE), FRICREG_OK, &
                     'set_newton_solver dense')
+  call check_status(hb%set_receptance(7), FRICREG_EINVAL, 'set_receptance 7')
+  call check_status(hb%set_receptance(FRICREG_HB_RECEPTANCE_LU), FRICREG_OK, 'set_receptance LU')
   call check_status(hb%set_stability_method(7), FRICREG_EINVAL, 'set_stability_method 7')
   call check_status(hb%set_stability_method(FRICREG_HB_STABILITY_HILL), FRICREG_OK, &
                     'set_stability_method Hill')

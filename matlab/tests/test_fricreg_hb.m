@@ -16,6 +16,7 @@ cases = {'stuck_solve_is_linear', @stuck_solve_is_linear
          'stuck_branch_is_linear', @stuck_branch_is_linear
          'sparse_equals_dense', @sparse_equals_dense
          'newton_solvers_agree', @newton_solvers_agree
+         'receptances_agree', @receptances_agree
          'elements_as_cell', @elements_as_cell
          'backbone_linear_limit', @backbone_linear_limit
          'backbone_at_amplitudes', @backbone_at_amplitudes
@@ -120,6 +121,20 @@ a = fricreg_hb_solve(h, 3.3);
 fricreg_hb_set(h, 'solver', 'capacitance');
 b = fricreg_hb_solve(h, 3.3);
 fricreg_test_check(b.x, a.x, 1e-10, 'capacitance x', max(abs(a.x(:))));
+end
+
+function receptances_agree()
+% D_h solved through the modes of (K, M) and by the LU, Rayleigh damping, sliding: to 1e-10
+% (the C library's tests/hb/test_hb_receptance.c checks every harmonic's receptance).
+[M, K, ~, J, kt, mun] = two_masses();
+h = fricreg_harmonic_balance(M, K, [], struct('type', 'jenkins', 'J', J, 'params', [kt mun]), ...
+                             5, 'excitation', [0.9; 0], 'rayleigh', [0.01 0.002]);
+cleanup = onCleanup(@() fricreg_hb_free(h));
+fricreg_hb_set(h, 'receptance', 'lu');
+a = fricreg_hb_solve(h, 3.3);
+fricreg_hb_set(h, 'receptance', 'modes');
+b = fricreg_hb_solve(h, 3.3);
+fricreg_test_check(b.x, a.x, 1e-10, 'modes x', max(abs(a.x(:))));
 end
 
 function elements_as_cell()

@@ -222,6 +222,7 @@ r('fricreg:EINVAL', @() fricreg_hb_set(h, 'newton', [1e-10 0]));
 r('fricreg:EINVAL', @() fricreg_hb_set(h, 'continuation', [0.5 1e-6 0.1 100]));
 r('fricreg:EINVAL', @() fricreg_hb_set(h, 'stability', true, 'method', 'euler'), 'hill');
 r('fricreg:EINVAL', @() fricreg_hb_set(h, 'solver', 'sparse'), 'capacitance');
+r('fricreg:EINVAL', @() fricreg_hb_set(h, 'receptance', 'klu'), 'modes');
 r('fricreg:EINVAL', @() fricreg_hb_set(h, 'stability', 2));
 r('fricreg:EINVAL', @() fricreg_hb_backbone(h, 0, 0.01, 1), 'mode');
 r('fricreg:EINVAL', @() fricreg_hb_backbone(h, 2, 0.01, 1), 'mode');

@@ -19,6 +19,11 @@ enum fricreg_hb_newton_solver {
     FRICREG_HB_NEWTON_DENSE = 1,
     FRICREG_HB_NEWTON_CAPACITANCE = 2
 };
+enum fricreg_hb_receptance {
+    FRICREG_HB_RECEPTANCE_AUTO = 0,
+    FRICREG_HB_RECEPTANCE_LU = 1,
+    FRICREG_HB_RECEPTANCE_MODES = 2
+};
 enum fricreg_hb_bifurcation_type {
     FRICREG_HB_TP = 1,
     FRICREG_HB_BP = 2,
@@ -40,6 +45,7 @@ int fricreg_hb_add_elements(fricreg_hb *hb, const fricreg_element_type *type, si
 int fricreg_hb_set_excitation(fricreg_hb *hb, size_t ndof, const double pc[], const double ps[]);
 int fricreg_hb_set_newton(fricreg_hb *hb, double tol, int max_iter);
 int fricreg_hb_set_newton_solver(fricreg_hb *hb, int solver);
+int fricreg_hb_set_receptance(fricreg_hb *hb, int method);
 int fricreg_hb_set_continuation(fricreg_hb *hb, double ds, double ds_min, double ds_max,
                                 size_t max_points);
 int fricreg_hb_set_monitor(fricreg_hb *hb, fricreg_hb_monitor fn, void *user);

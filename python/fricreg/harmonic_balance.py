@@ -28,6 +28,8 @@ _STABILITY_METHODS = {"auto": lib.FRICREG_HB_STABILITY_AUTO,
                       "condensed": lib.FRICREG_HB_STABILITY_CONDENSED}
 _NEWTON_SOLVERS = {"auto": lib.FRICREG_HB_NEWTON_AUTO, "dense": lib.FRICREG_HB_NEWTON_DENSE,
                    "capacitance": lib.FRICREG_HB_NEWTON_CAPACITANCE}
+_RECEPTANCES = {"auto": lib.FRICREG_HB_RECEPTANCE_AUTO, "lu": lib.FRICREG_HB_RECEPTANCE_LU,
+                "modes": lib.FRICREG_HB_RECEPTANCE_MODES}
 _DAMPING = {"matrix": lib.FRICREG_HB_NMA_DAMPING_MATRIX,
             "modal": lib.FRICREG_HB_NMA_DAMPING_MODAL}
 _BIFURCATIONS = {lib.FRICREG_HB_TP: "TP", lib.FRICREG_HB_BP: "BP", lib.FRICREG_HB_PD: "PD",
@@ -342,6 +344,26 @@ class HarmonicBalance:
                                               as_integer(max_iter, "max_iter")), "set_newton")
         if code is not None:
             self._check(lib.fricreg_hb_set_newton_solver(self._hb, code), "set_newton")
+
+    def set_receptance(self, method="auto"):
+        """How the dynamic stiffnesses D_h = K - (h omega)^2 M + i h omega C are solved at each
+        frequency (``fricreg_hb_set_receptance``).
+
+        method : {"auto", "lu", "modes"}
+            ``"lu"``, LAPACK's LU of each D_h (1.9's); ``"modes"``, through the modes of
+            K phi = lambda M phi, which make every D_h diagonal where the damping is Rayleigh's
+            (or none): one product with the modes a harmonic, several times faster from a few
+            hundred dofs; ``"auto"`` (the default), the modes from 200 dofs. The modes serve only
+            where M's reciprocal condition number is at least 1e-6, and never with a damping
+            matrix or a sparse model (the LU then serves). The results agree to rounding.
+
+        Raises
+        ------
+        fricreg.InputError
+            An unknown method.
+        """
+        code = choice(_RECEPTANCES, method, "method")
+        self._check(lib.fricreg_hb_set_receptance(self._hb, code), "set_receptance")
 
     def set_continuation(self, ds=0.02, ds_min=1e-6, ds_max=0.1, max_points=2000):
         """The continuation's step control in the scaled arclength

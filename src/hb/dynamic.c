@@ -13,6 +13,7 @@
 #include "dynamic.h"
 #include "sparse.h"
 #include "lu.h"
+#include "modal.h"
 #include "base/lapack.h"
 
 /* (a + ib)(c + id) accumulated into out[0..1] with the sign s. */
@@ -227,7 +228,7 @@ int fr_hb_factor(fricreg_hb *hb, const char *fn, double omega, int deriv)
         return FRICREG_OK;
     size_t n = hb->n, m = hb->m, w = m + 1;
     hb->factored_omega = NAN;
-    int status = FRICREG_OK;
+    int status = FRICREG_OK, modal = fr_hb_modal_ready(hb);
     for (int h = 0; h <= hb->H; h++) {
         if (h == 0 && !hb->sparse && hb->k_kept == hb->model_serial + 1) {
             if (deriv) { /* D_0 = K: Y_0, G_0 kept, their Ω derivatives 0 */
@@ -238,6 +239,8 @@ int fr_hb_factor(fricreg_hb *hb, const char *fn, double omega, int deriv)
         }
         if (hb->sparse) {
             status = fr_hb_sparse_solve(hb, fn, h, omega);
+        } else if (modal) {
+            status = fr_hb_modal_solve(hb, fn, h, omega, deriv && h > 0); /* dY_h in Z */
         } else {
             status = factor_one(hb, fn, h, omega);
             if (status == FRICREG_OK)
@@ -256,6 +259,10 @@ int fr_hb_factor(fricreg_hb *hb, const char *fn, double omega, int deriv)
         if (h == 0) {
             memset(dG, 0, 2 * m * m * sizeof(double));
             memset(dq, 0, 2 * m * sizeof(double));
+            continue;
+        }
+        if (modal) {
+            fr_hb_project(hb, NULL, hb->Z, 1.0, dG, dq);
             continue;
         }
         if (hb->sparse)

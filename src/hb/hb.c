@@ -15,6 +15,7 @@
 #include "rows.h"
 #include "sparse.h"
 #include "capacitance.h"
+#include "modal.h"
 #include "newton_matrix.h"
 #include "hb.h"
 #include "busy.h"
@@ -53,6 +54,7 @@ int fricreg_hb_create(size_t ndof, size_t m, int harmonics, fricreg_hb **out)
                        .level_sol = 1.0,
                        .factored_omega = NAN,
                        .capacitance_min = FR_HB_CAPACITANCE_MIN,
+                       .modal_min = FR_HB_MODAL_MIN_DOFS,
                        .capacitance_share = FR_HB_CAPACITANCE_SHARE};
     /* up to 4096 dofs the dense model, as the dense setters leave it; beyond, sparse only */
     int dense = n <= MAX_DENSE_DOFS;
@@ -105,6 +107,7 @@ void fricreg_hb_free(fricreg_hb *hb)
     fr_aft_march_free(hb->march);
     fr_hb_sparse_free(hb);
     fr_hb_capacitance_free(hb);
+    fr_hb_modal_free(hb);
     fr_cholmod_finish(&hb->cc);
     free(hb);
 }
@@ -134,6 +137,7 @@ int fr_hb_clone(const fricreg_hb *src, int harmonics, fricreg_hb **out)
     hb->max_iter = src->max_iter;
     hb->capacitance_min = src->capacitance_min;
     hb->capacitance_share = src->capacitance_share;
+    hb->modal_min = src->modal_min;
     (void)fr_hb_newton_matrix_room(hb); /* none: the dense LU serves */
     hb->monitor = src->monitor;
     hb->monitor_user = src->monitor_user;
@@ -180,6 +184,24 @@ int fricreg_hb_set_newton_solver(fricreg_hb *hb, int solver)
         hb->capacitance_min = min;
         hb->capacitance_share = share;
         return fr_fail(hb, FRICREG_ENOMEM, "set_newton_solver: no room for the capacitance");
+    }
+    return FRICREG_OK;
+}
+
+int fricreg_hb_set_receptance(fricreg_hb *hb, int method)
+{
+    static const size_t LEAST_DOFS[] = {[FRICREG_HB_RECEPTANCE_AUTO] = FR_HB_MODAL_MIN_DOFS,
+                                        [FRICREG_HB_RECEPTANCE_LU] = SIZE_MAX,
+                                        [FRICREG_HB_RECEPTANCE_MODES] = 0};
+    if (hb == NULL || hb->busy)
+        return fr_hb_refuse(hb, "set_receptance");
+    if (method < FRICREG_HB_RECEPTANCE_AUTO || method > FRICREG_HB_RECEPTANCE_MODES)
+        return fr_fail(hb, FRICREG_EINVAL,
+                       "set_receptance: method = %d is none of enum fricreg_hb_receptance", method);
+    if (hb->modal_min != LEAST_DOFS[method]) { /* the factors were the other route's */
+        hb->modal_min = LEAST_DOFS[method];
+        hb->factored_omega = NAN;
+        hb->k_kept = 0;
     }
     return FRICREG_OK;
 }

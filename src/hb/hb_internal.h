@@ -126,6 +126,15 @@ struct fricreg_hb {
     double *dG;   /* [(H+1) m m] complex: dG_h/dΩ */
     double *dql;  /* [(H+1) m] complex: dql_h/dΩ */
     double *colw; /* [n] complex scratch: one column */
+    /* The modes of (K, M) (modal.c), for a dense model with proportional damping: modes
+     * [n n] column-major, Φ^T M Φ = I, then lambda [n] (K Φ = M Φ Λ); jmodes [m n] J Φ
+     * column-major, then xmodal [2 n (m + 1)] scratch; NULL: none yet. modes_serial is
+     * mk_serial + 1 while the modes hold (mk_serial counts M's and K's changes), modes_failed
+     * the same where they cannot serve, jmodes_serial model_serial + 1 while J Φ holds; the
+     * least n solved through them (SIZE_MAX: never, fricreg_hb_set_dynamic_solver). */
+    double *modes, *lambda, *jmodes, *xmodal;
+    size_t jmodes_rows, modal_min;
+    unsigned long mk_serial, modes_serial, modes_failed, jmodes_serial;
 
     /* The sparse model (sparse.c): M, C, K as the upper triangles of their symmetric parts,
      * and D_h's pattern, the union of theirs with both triangles (compressed columns, rows
