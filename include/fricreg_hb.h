@@ -54,7 +54,7 @@
  * per Newton iteration m AFTs (O(H³) each) and a real LU of order m (2H + 1), or from
  * m (2H + 1) = 512 on, where most rows of the elements' Jacobian are a stiffness on the
  * diagonal (stuck elements, closed contacts' normal rows), the LU of its capacitance on the
- * other rows (docs/harmonic_balance.md, "Size"). A dense model
+ * other rows (docs/hb_size.md). A dense model
  * (the dense setters) is factored by a complex LU with partial pivoting, O(H ndof³): for small
  * to medium ndof (at most 4096). Both dense LUs are fricreg's own, on memory allocated at
  * create and by the element setters, so a dense solve allocates nothing. A sparse
@@ -133,7 +133,7 @@ typedef struct fricreg_hb fricreg_hb;
  *  ndof       degrees of freedom, 1 <= ndof <= 2^24.
  *  m          elements, m >= 1: no fixed bound, the memory is the limit (the dense Newton
  *             matrix of order nq + 1, nq = rows of J times 2H + 1, grows as its square:
- *             docs/harmonic_balance.md, "Size").
+ *             docs/hb_size.md).
  *  harmonics  H, 1 <= H <= FRICREG_HB_MAX_HARMONICS.
  *  out        out: the new object, released with fricreg_hb_free. Written only on success.
  *
@@ -642,7 +642,7 @@ enum fricreg_hb_receptance {
  *  make every D_h diagonal, D_h^-1 = Φ diag(1/(λ_k (1 + i hΩ a1) + i hΩ a0 − (hΩ)²)) Φ^T, so
  *  a frequency costs one real product with Φ a harmonic, 4 n² (m + 1) flops, and as much for
  *  the continuation's Ω derivative, where the LU costs 8 n³/3 + 8 n² (m + 1) and the
- *  derivative 12 n² (m + 1) + 8 m² n more (docs/harmonic_balance.md, "Size"): at an interface
+ *  derivative 12 n² (m + 1) + 8 m² n more (docs/hb_size.md): at an interface
  *  ROM of 859 dofs and 696 rows, 0.09 s against 0.69 s a continuation's frequency. Results
  *  agree with the LU's to rounding amplified by M's condition number, not bit for bit, so the
  *  modes serve only where M is positive definite with a reciprocal condition number (1-norm,

@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* dynamic.c — the dynamic stiffnesses D_h(Ω) = K − (hΩ)² M + i hΩ C, h = 0..H, factored by
- * the complex LU of lu.c (partial pivoting; Golub & Van Loan, Matrix Computations, 4th ed., Alg.
- * 3.4.1; on the driver's arrays: no allocation, no GSL), their solves Y_h = D_h^-1 [J^T | P_h], and the condensation on the elements:
+ * LAPACK's complex LU (lu.c; on the driver's arrays, no GSL) or, with Rayleigh damping, solved
+ * through the modes of (K, M) (modal.c), their solves Y_h = D_h^-1 [J^T | P_h], and the
+ * condensation on the elements:
  * G_h = J Y_h (the receptance between the elements' coordinates), ql_h = J D_h^-1 P_h (their
  * response with the elements removed), and with deriv their Ω derivatives,
  * d(J D^-1 B)/dΩ = −(J D^-1) D' (D^-1 B), where J D^-1 = (D^-1 J^T)^T because M, C, K (so D)
@@ -111,7 +112,7 @@ int fr_hb_condition(fricreg_hb *hb, const char *fn, double *kappa)
 /* Y_h's columns: D_h^-1 J_e^T for each element e, and D_h^-1 P_h (0 but for h = 1), solved
  * together in the scratch Z (column after column, LAPACK's layout) by one zgetrs: BLAS 3,
  * where one column at a time was BLAS 2 and most of the condensation's time (1.0 of 1.6 s at
- * 696 rows on 859 dofs, docs/harmonic_balance.md, "Size"). */
+ * 696 rows on 859 dofs, docs/hb_size.md). */
 static void solve_columns(fricreg_hb *hb, int h)
 {
     size_t n = hb->n, m = hb->m, w = m + 1, nrhs = h == 1 ? w : m;

@@ -44,7 +44,7 @@ static int add(size_t a, size_t b, size_t *out)
 /* The doubles of J's, Y's, Z's, G's and fq's blocks (rows_alloc's) for cap rows and sq units of
  * nc², each also countable in bytes; 0 when one overflows size_t or Newton's order nq + 1
  * overflows LAPACK's int (lu.c): no memory could hold them. No fixed bound on the rows: the
- * memory is the limit (docs/harmonic_balance.md, "Size"). */
+ * memory is the limit (docs/hb_size.md). */
 static int block_sizes(const fricreg_hb *hb, size_t cap, size_t sq, size_t count[5])
 {
     size_t n = hb->n, H1 = (size_t)hb->H + 1, nc = hb->nc, nq, nq1, t, u;
