@@ -637,23 +637,24 @@ enum fricreg_hb_receptance {
 };
 
 /** Choose how a dense model's D_h(Ω) = K − (hΩ)² M + i hΩ C are solved, at the next frequency
- *  on. Where C is Rayleigh's (fricreg_hb_set_rayleigh: C = a0 M + a1 K, or none), the modes
- *  of K φ = λ M φ (LAPACK's dsygvd, once a model: about 10 n³ flops and n² + m n doubles kept)
- *  make every D_h diagonal, D_h^-1 = Φ diag(1/(λ_k (1 + i hΩ a1) + i hΩ a0 − (hΩ)²)) Φ^T, so
- *  a frequency costs one real product with Φ a harmonic, 4 n² (m + 1) flops, and as much for
- *  the continuation's Ω derivative, where the LU costs 8 n³/3 + 8 n² (m + 1) and the
- *  derivative 12 n² (m + 1) + 8 m² n more (docs/hb_size.md): at an interface
- *  ROM of 859 dofs and 696 rows, 0.09 s against 0.69 s a continuation's frequency. Results
- *  agree with the LU's to rounding amplified by M's condition number, not bit for bit, so the
- *  modes serve only where M is positive definite with a reciprocal condition number (1-norm,
- *  LAPACK's dpocon) of at least 1e-6; elsewhere, with a damping matrix of fricreg_hb_set_damping,
- *  and for a sparse model (above 4096 dofs, or set sparse), the LU serves whatever the choice.
+ *  on. Where C is Rayleigh's (fricreg_hb_set_rayleigh: C = a0 M + a1 K) or zero (as created),
+ *  the modes of K φ = λ M φ (LAPACK's dsygvd, once a model: about 10 n³ flops, n² + m n
+ *  doubles kept) make every D_h diagonal, D_h^-1 = Φ diag(1/d_k) Φ^T with
+ *  d_k = λ_k (1 + i hΩ a1) + i hΩ a0 − (hΩ)², so a frequency costs one real product with Φ a
+ *  harmonic, 4 n² (m + 1) flops, and as much for the continuation's Ω derivative, where the LU
+ *  costs 8 n³/3 + 8 n² (m + 1) and the derivative 12 n² (m + 1) + 8 m² n more
+ *  (docs/hb_size.md): at an interface ROM of 859 dofs and 696 rows, 0.34 s against 1.25 s a
+ *  continuation's frequency, measured in one run. Results agree with the LU's to rounding
+ *  amplified by M's condition number, not bit for bit, so the modes serve only where M is
+ *  positive definite with a reciprocal condition number (1-norm, LAPACK's dpocon) of at least
+ *  1e-6; elsewhere, with a nonzero damping matrix (fricreg_hb_set_damping), and for a sparse
+ *  model (above 4096 dofs, or set sparse), the LU serves whatever the choice.
  *  FRICREG_HB_RECEPTANCE_LU gives 1.9's results bit for bit. Since 1.10 (FRICREG_1.10).
  *
  *  method   enum fricreg_hb_receptance.
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if hb is NULL; FRICREG_EINVAL if method is none of the
- *  enum (the choice then stays). A solve that finds a mode's d_k below 1e-14 of its terms'
+ *  enum (the choice then stays). A solve that finds a mode's |d_k| below 1e-14 of its terms'
  *  scale returns FRICREG_ESINGULAR, as the LU's pivot test does. */
 FRICREG_API int fricreg_hb_set_receptance(fricreg_hb *hb, int method);
 

@@ -55,6 +55,7 @@ int fricreg_hb_create(size_t ndof, size_t m, int harmonics, fricreg_hb **out)
                        .factored_omega = NAN,
                        .capacitance_min = FR_HB_CAPACITANCE_MIN,
                        .modal_min = FR_HB_MODAL_MIN_DOFS,
+                       .c_zero = 1,
                        .capacitance_share = FR_HB_CAPACITANCE_SHARE};
     /* up to 4096 dofs the dense model, as the dense setters leave it; beyond, sparse only */
     int dense = n <= MAX_DENSE_DOFS;
@@ -130,6 +131,7 @@ int fr_hb_clone(const fricreg_hb *src, int harmonics, fricreg_hb **out)
     if (!src->sparse) /* M, C, K: one block */
         memcpy(hb->M, src->M, 3 * n * n * sizeof(double));
     hb->rayleigh = src->rayleigh;
+    hb->c_zero = src->c_zero;
     hb->a0 = src->a0;
     hb->a1 = src->a1;
     memcpy(hb->pc, src->pc, 2 * n * sizeof(double)); /* pc, ps */

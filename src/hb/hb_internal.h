@@ -72,6 +72,7 @@ struct fricreg_hb {
     size_t nc, nq;     /* 2H + 1 coefficients, m nc unknowns */
     double *M, *C, *K; /* [n n] each, row-major, symmetric (dense models; NULL above 4096) */
     int rayleigh;      /* C = a0 M + a1 K instead of the matrix C */
+    int c_zero;        /* the matrix C is zero (as created) */
     double a0, a1;
     double *J;  /* [m n] (room for rows_cap rows) */
     size_t ns;  /* sliders per element when alike (1: Jenkins), 0 when they differ */

@@ -99,7 +99,8 @@ static int project_rows(fricreg_hb *hb)
 
 int fr_hb_modal_ready(fricreg_hb *hb)
 {
-    if (hb->sparse || !(hb->rayleigh || hb->no_c) || hb->n < hb->modal_min || hb->m == 0)
+    int proportional = hb->rayleigh || hb->no_c || hb->c_zero;
+    if (hb->sparse || !proportional || hb->n < hb->modal_min || hb->m == 0)
         return 0;
     unsigned long now = hb->mk_serial + 1;
     if (hb->modes_failed == now)
@@ -121,11 +122,12 @@ int fr_hb_modal_ready(fricreg_hb *hb)
 }
 
 /* The damping's coefficients in the modes: c_k = cm + ck λ_k (cm = a0 − xi, ck = a1; with
- * no_c, −xi and 0). */
+ * no_c or a zero damping matrix, −xi and 0). */
 static void damping_terms(const fricreg_hb *hb, double *cm, double *ck)
 {
-    *cm = (hb->no_c ? 0.0 : hb->a0) - hb->xi;
-    *ck = hb->no_c ? 0.0 : hb->a1;
+    int rayleigh = hb->rayleigh && !hb->no_c;
+    *cm = (rayleigh ? hb->a0 : 0.0) - hb->xi;
+    *ck = rayleigh ? hb->a1 : 0.0;
 }
 
 /* X (row-major n × (m + 1), complex) = diag(s_k) Φ^T [J^T | P_h]: the modal coordinates of the

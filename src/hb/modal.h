@@ -11,7 +11,7 @@
 #define FR_HB_MODAL_MIN_RCOND 1e-6
 
 /* Whether Y_h is solved through the modes at this call: a dense model with Rayleigh damping
- * (or none, the nonlinear modes' modal option), n >= hb->modal_min, and the modes of (K, M)
+ * (or none: a zero damping matrix, or the nonlinear modes' modal option), n >= hb->modal_min, and the modes of (K, M)
  * at hand (computed here once a model: LAPACK's dsygvd). 0 where M is not positive definite,
  * its reciprocal condition number is below FR_HB_MODAL_MIN_RCOND, or memory is short: the LU
  * then serves, with the same results to rounding. */

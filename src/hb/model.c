@@ -61,6 +61,11 @@ static int set_symmetric(fricreg_hb *hb, const char *fn, size_t ndof, const doub
         return fr_hb_sparse_set_dense(hb, fn, which, A);
     double *dst = which == 0 ? hb->M : which == 1 ? hb->C : hb->K;
     hb->mk_serial += which != 1; /* the modes of (K, M) no longer hold */
+    if (which == 1) {
+        hb->c_zero = 1;
+        for (size_t k = 0; k < n * n && hb->c_zero; k++)
+            hb->c_zero = A[k] == 0.0;
+    }
     for (size_t i = 0; i < n; i++)
         for (size_t k = 0; k < n; k++)
             dst[i * n + k] = 0.5 * A[i * n + k] + 0.5 * A[k * n + i]; /* no overflow near 1e308 */

@@ -6,7 +6,8 @@
  * derivatives agree with LAPACK's LU of each D_h to 1e-10 of their scale, a solve and a
  * continuation to 1e-8; the automatic choice is the modes' bit for bit at 210 dofs and the
  * LU's below 200; the LU serves, bit for bit, where the modes cannot (a damping matrix, a mass
- * matrix of reciprocal condition number below 1e-6); a new mass matrix gives new modes; a
+ * matrix of reciprocal condition number below 1e-6), and a zero damping matrix takes the
+ * modes; a new mass matrix gives new modes; a
  * frequency on an undamped mode is FRICREG_ESINGULAR, nothing written. */
 #include <check.h>
 #include <math.h>
@@ -194,6 +195,26 @@ START_TEST(lu_where_modes_cannot)
 }
 END_TEST
 
+/* A zero damping matrix (fricreg_hb_set_damping of zeros, as a driver is created) is damping
+ * the modes diagonalize: they serve, and the undamped solve agrees with the LU's to 1e-8. */
+START_TEST(undamped_takes_the_modes)
+{
+    fricreg_hb *lu = chain(N, 1.0, FRICREG_HB_RECEPTANCE_LU);
+    fricreg_hb *modes = chain(N, 1.0, FRICREG_HB_RECEPTANCE_MODES);
+    double *zero = calloc(N * N, sizeof(double)), *q = malloc(2 * lu->nq * sizeof(double)), scale;
+    ck_assert_int_eq(fricreg_hb_set_damping(lu, N, zero), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_damping(modes, N, zero), FRICREG_OK);
+    solve_once(lu, q);
+    solve_once(modes, q + lu->nq);
+    ck_assert_ptr_nonnull(modes->jmodes);
+    double d = distance(q + lu->nq, q, lu->nq, &scale);
+    ck_assert_msg(d <= 1e-8 * scale, "undamped: modes against LU %g of %g", d, scale);
+    free(zero), free(q);
+    fricreg_hb_free(lu);
+    fricreg_hb_free(modes);
+}
+END_TEST
+
 /* A new mass matrix after a solve: the next solve takes the new modes, bit for bit a new
  * driver's with that mass. */
 START_TEST(new_mass_new_modes)
@@ -281,6 +302,7 @@ static Suite *suite(void)
     TCase *solves = tcase_create("solves");
     tcase_add_test(solves, solve_and_continue);
     tcase_add_test(solves, lu_where_modes_cannot);
+    tcase_add_test(solves, undamped_takes_the_modes);
     suite_add_tcase(s, solves);
     return s;
 }
