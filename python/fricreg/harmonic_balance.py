@@ -353,9 +353,10 @@ class HarmonicBalance:
             ``"lu"``, LAPACK's LU of each D_h (1.9's); ``"modes"``, through the modes of
             K phi = lambda M phi, which make every D_h diagonal where the damping is Rayleigh's
             (or none): one product with the modes a harmonic, several times faster from a few
-            hundred dofs; ``"auto"`` (the default), the modes from 200 dofs. The modes serve only
-            where M's reciprocal condition number is at least 1e-6, and never with a damping
-            matrix or a sparse model (the LU then serves). The results agree to rounding.
+            hundred dofs; ``"auto"`` (the default), the modes from 200 dofs. The modes serve
+            only where M's reciprocal condition number is at least 1e-6, and never with a
+            nonzero damping matrix or a sparse model (the LU then serves). The results agree to
+            rounding.
 
         Raises
         ------

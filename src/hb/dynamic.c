@@ -238,10 +238,12 @@ int fr_hb_factor(fricreg_hb *hb, const char *fn, double omega, int deriv)
             }
             continue;
         }
+        double *G = hb->G + 2 * (size_t)h * m * m, *q = hb->ql + 2 * (size_t)h * m;
+        double *dG = hb->dG + 2 * (size_t)h * m * m, *dq = hb->dql + 2 * (size_t)h * m;
         if (hb->sparse) {
             status = fr_hb_sparse_solve(hb, fn, h, omega);
         } else if (modal) {
-            status = fr_hb_modal_solve(hb, fn, h, omega, deriv && h > 0); /* dY_h in Z */
+            status = fr_hb_modal_solve(hb, fn, h, omega, deriv && h > 0 ? dG : NULL, dq);
         } else {
             status = factor_one(hb, fn, h, omega);
             if (status == FRICREG_OK)
@@ -250,20 +252,14 @@ int fr_hb_factor(fricreg_hb *hb, const char *fn, double omega, int deriv)
         if (status != FRICREG_OK)
             return status;
         const double *Y = hb->Y + 2 * (size_t)h * n * w;
-        double *G = hb->G + 2 * (size_t)h * m * m, *q = hb->ql + 2 * (size_t)h * m;
         fr_hb_project(hb, NULL, Y, 1.0, G, q);
         if (h == 0 && !hb->sparse)
             hb->k_kept = hb->model_serial + 1;
-        double *dG = hb->dG + 2 * (size_t)h * m * m, *dq = hb->dql + 2 * (size_t)h * m;
-        if (!deriv)
+        if (!deriv || (modal && h > 0)) /* the modes' solve wrote dG, dq */
             continue;
         if (h == 0) {
             memset(dG, 0, 2 * m * m * sizeof(double));
             memset(dq, 0, 2 * m * sizeof(double));
-            continue;
-        }
-        if (modal) {
-            fr_hb_project(hb, NULL, hb->Z, 1.0, dG, dq);
             continue;
         }
         if (hb->sparse)

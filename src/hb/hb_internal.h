@@ -132,7 +132,7 @@ struct fricreg_hb {
      * column-major, then xmodal [2 n (m + 1)] scratch; NULL: none yet. modes_serial is
      * mk_serial + 1 while the modes hold (mk_serial counts M's and K's changes), modes_failed
      * the same where they cannot serve, jmodes_serial model_serial + 1 while J Φ holds; the
-     * least n solved through them (SIZE_MAX: never, fricreg_hb_set_dynamic_solver). */
+     * least n solved through them (SIZE_MAX: never; fricreg_hb_set_receptance). */
     double *modes, *lambda, *jmodes, *xmodal;
     size_t jmodes_rows, modal_min;
     unsigned long mk_serial, modes_serial, modes_failed, jmodes_serial;

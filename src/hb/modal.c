@@ -131,8 +131,8 @@ static void damping_terms(const fricreg_hb *hb, double *cm, double *ck)
 }
 
 /* X (row-major n × (m + 1), complex) = diag(s_k) Φ^T [J^T | P_h]: the modal coordinates of the
- * right-hand sides scaled by s_k (1/d_k, or its Ω derivative); the load column P_1 = pc − i ps
- * at h = 1, 0 at other h. */
+ * right-hand sides scaled by s_k = 1/d_k; the load column P_1 = pc − i ps at h = 1, 0 at
+ * other h. */
 static void scale_modal(fricreg_hb *hb, int h, const double complex *s, double *X)
 {
     size_t n = hb->n, m = hb->m, w = m + 1;
@@ -162,7 +162,19 @@ static void from_modes(fricreg_hb *hb, const double *X, double *out)
            1);
 }
 
-int fr_hb_modal_solve(fricreg_hb *hb, const char *fn, int h, double omega, int deriv)
+/* The elements' rows of Φ X as dynamic.c lays out G_h and ql_h: G [m m] from X's first m
+ * columns and q [m] from its last (complex), each by one dgemm with J Φ, m rows where Φ X has
+ * n. Column-major, G^T = X_J^T (J Φ)^T with X_J^T the real 2m × n of those columns' parts
+ * (leading dimension 2 (m + 1)). */
+static void rows_from_modes(fricreg_hb *hb, const double *X, double *G, double *q)
+{
+    int m = (int)hb->m, n = (int)hb->n, ld = 2 * (m + 1), pair = 2, cols = 2 * m;
+    double one = 1.0, zero = 0.0;
+    dgemm_("N", "T", &cols, &m, &n, &one, X, &ld, hb->jmodes, &m, &zero, G, &cols, 1, 1);
+    dgemm_("N", "T", &pair, &m, &n, &one, X + cols, &ld, hb->jmodes, &m, &zero, q, &pair, 1, 1);
+}
+
+int fr_hb_modal_solve(fricreg_hb *hb, const char *fn, int h, double omega, double *dG, double *dq)
 {
     size_t n = hb->n, w = hb->m + 1;
     double cm, ck, wh = h * omega, scale = 0.0, least = INFINITY;
@@ -184,13 +196,15 @@ int fr_hb_modal_solve(fricreg_hb *hb, const char *fn, int h, double omega, int d
                        fn, h == 0 ? "K" : "the dynamic stiffness D_h", omega, at, least, scale);
     scale_modal(hb, h, s, hb->xmodal);
     from_modes(hb, hb->xmodal, hb->Y + 2 * (size_t)h * n * w);
-    if (!deriv)
+    if (dG == NULL)
         return FRICREG_OK;
-    for (size_t k = 0; k < n; k++) { /* d(1/d_k)/dΩ = −d_k' s_k², d_k' = h (i c_k − 2 w) */
-        double complex dd = h * (I * (cm + ck * hb->lambda[k]) - 2.0 * wh);
-        s[k] = -dd * s[k] * s[k];
+    /* d(1/d_k)/dΩ = −d_k' s_k², d_k' = h (i c_k − 2 w): X's row k times −d_k' s_k */
+    for (size_t k = 0; k < n; k++) {
+        double complex f = -h * (I * (cm + ck * hb->lambda[k]) - 2.0 * wh) * s[k];
+        double complex *row = (double complex *)(hb->xmodal + 2 * k * w);
+        for (size_t c = 0; c < w; c++)
+            row[c] *= f;
     }
-    scale_modal(hb, h, s, hb->xmodal);
-    from_modes(hb, hb->xmodal, hb->Z);
+    rows_from_modes(hb, hb->xmodal, dG, dq);
     return FRICREG_OK;
 }

@@ -6,7 +6,7 @@
 #include "hb_internal.h"
 
 /* The least n, and the least reciprocal condition number of M, at which the modes serve
- * (fricreg_hb_set_dynamic_solver's AUTO). */
+ * (fricreg_hb_set_receptance's AUTO). */
 #define FR_HB_MODAL_MIN_DOFS 200
 #define FR_HB_MODAL_MIN_RCOND 1e-6
 
@@ -18,9 +18,10 @@
 int fr_hb_modal_ready(fricreg_hb *hb);
 
 /* Y_h = Φ diag(1/d_k) Φ^T [J^T | P_h], d_k = λ_k (1 + i hΩ a1) + i hΩ (a0 − xi) − (hΩ)², into
- * hb->Y (h's block, dynamic.h's layout); with deriv also dY_h/dΩ into hb->Z. FRICREG_OK;
+ * hb->Y (h's block, dynamic.h's layout); with dG non-NULL also the Ω derivatives of G_h and
+ * ql_h, J dY_h/dΩ, into dG [m m] and dq [m] (complex). FRICREG_OK;
  * FRICREG_ESINGULAR where some |d_k| is below 1e-14 of the terms' scale (message with fn). */
-int fr_hb_modal_solve(fricreg_hb *hb, const char *fn, int h, double omega, int deriv);
+int fr_hb_modal_solve(fricreg_hb *hb, const char *fn, int h, double omega, double *dG, double *dq);
 
 /* Frees the modes and their room. */
 void fr_hb_modal_free(fricreg_hb *hb);
