@@ -9,7 +9,8 @@ function fricreg_hb_set(h, varargin)
 %                      iterations a solve. Defaults [1e-10 50].
 %      'solver'        how Newton's matrix is solved: 'auto' (default: by its capacitance from
 %                      512 unknowns where few rows of the elements' Jacobian are off its
-%                      diagonal), 'dense' (LAPACK's LU, 1.9's) or 'capacitance'; the results
+%                      diagonal, else dense, from 1024 first by refinement on the last LU),
+%                      'dense' (LAPACK's LU of each, 1.9's) or 'capacitance'; the results
 %                      agree to rounding.
 %      'receptance'    how D_h = K - (h Omega)^2 M + i h Omega C is solved at each frequency:
 %                      'auto' (default: through the modes of (K, M) from 200 dofs where the

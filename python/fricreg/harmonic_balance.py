@@ -330,7 +330,8 @@ class HarmonicBalance:
             ``"auto"`` at first): ``"dense"``,
             LAPACK's LU of the whole (1.9's); ``"capacitance"``, Woodbury's identity on the rows
             of the elements' Jacobian off its diagonal; ``"auto"``, the capacitance from 512
-            unknowns where those rows are at most 0.8 of them. The results agree to rounding.
+            unknowns where those rows are at most 0.8 of them, else dense, from 1024 unknowns
+            first by refinement on the last matrix's LU. The results agree to rounding.
 
         Raises
         ------

@@ -10,6 +10,7 @@
 #include "solve_at.h"
 #include "hb/dynamic.h"
 #include "hb/newton.h"
+#include "hb/newton_matrix.h"
 
 /* The arguments every solve shares: omega (named as the caller's header names it), nq, q0. */
 int fr_hb_check_start(fricreg_hb *hb, const char *fn, const char *name, double omega, size_t nq,
@@ -38,6 +39,7 @@ int fr_hb_check_start(fricreg_hb *hb, const char *fn, const char *name, double o
  * qw (and R, fq, jq at it), with keep its stability (when on) and kept as the driver's last. */
 int fr_hb_solve_at(fricreg_hb *hb, const char *fn, double omega, const double *q0, int keep)
 {
+    fr_hb_newton_forget(hb);
     int status = fr_hb_factor(hb, fn, omega, 0);
     if (status != FRICREG_OK)
         return status;

@@ -55,6 +55,7 @@ int fricreg_hb_create(size_t ndof, size_t m, int harmonics, fricreg_hb **out)
                        .factored_omega = NAN,
                        .capacitance_min = FR_HB_CAPACITANCE_MIN,
                        .modal_min = FR_HB_MODAL_MIN_DOFS,
+                       .held_min = FR_HB_REFINE_MIN,
                        .c_zero = 1,
                        .capacitance_share = FR_HB_CAPACITANCE_SHARE};
     /* up to 4096 dofs the dense model, as the dense setters leave it; beyond, sparse only */
@@ -140,6 +141,7 @@ int fr_hb_clone(const fricreg_hb *src, int harmonics, fricreg_hb **out)
     hb->capacitance_min = src->capacitance_min;
     hb->capacitance_share = src->capacitance_share;
     hb->modal_min = src->modal_min;
+    hb->held_min = src->held_min;
     (void)fr_hb_newton_matrix_room(hb); /* none: the dense LU serves */
     hb->monitor = src->monitor;
     hb->monitor_user = src->monitor_user;
@@ -165,13 +167,16 @@ int fricreg_hb_set_newton(fricreg_hb *hb, double tol, int max_iter)
 
 int fricreg_hb_set_newton_solver(fricreg_hb *hb, int solver)
 {
-    /* the least nq solved by the capacitance, and its largest share of rows off Ĵ's diagonal */
+    /* the least nq solved by the capacitance, its largest share of rows off Ĵ's diagonal, and
+     * the least order of a dense matrix solved by refinement on an earlier one's factor */
     static const struct {
         size_t min;
         double share;
-    } SOLVERS[] = {[FRICREG_HB_NEWTON_AUTO] = {FR_HB_CAPACITANCE_MIN, FR_HB_CAPACITANCE_SHARE},
-                   [FRICREG_HB_NEWTON_DENSE] = {SIZE_MAX, 0.0},
-                   [FRICREG_HB_NEWTON_CAPACITANCE] = {0, 1.0}};
+        size_t held_min;
+    } SOLVERS[] = {[FRICREG_HB_NEWTON_AUTO] = {FR_HB_CAPACITANCE_MIN, FR_HB_CAPACITANCE_SHARE,
+                                               FR_HB_REFINE_MIN},
+                   [FRICREG_HB_NEWTON_DENSE] = {SIZE_MAX, 0.0, SIZE_MAX},
+                   [FRICREG_HB_NEWTON_CAPACITANCE] = {0, 1.0, FR_HB_REFINE_MIN}};
     if (hb == NULL || hb->busy)
         return fr_hb_refuse(hb, "set_newton_solver");
     if (solver < FRICREG_HB_NEWTON_AUTO || solver > FRICREG_HB_NEWTON_CAPACITANCE)
@@ -187,6 +192,7 @@ int fricreg_hb_set_newton_solver(fricreg_hb *hb, int solver)
         hb->capacitance_share = share;
         return fr_fail(hb, FRICREG_ENOMEM, "set_newton_solver: no room for the capacitance");
     }
+    hb->held_min = SOLVERS[solver].held_min;
     return FRICREG_OK;
 }
 

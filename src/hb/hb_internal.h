@@ -153,22 +153,28 @@ struct fricreg_hb {
     struct fr_hb_lu *lu;      /* [H + 1]: each harmonic's factor (sparse.c) */
 
     /* Newton (residual.c, newton.c; forced/corrector.c, forced/arclength.c) */
-    double *fq;   /* [nq] element force coefficients at the last evaluation */
-    double *jq;   /* [ejq[count] nc²] their Jacobians, element e's block [(rows nc)²] at
+    double *fq;     /* [nq] element force coefficients at the last evaluation */
+    double *jq;     /* [ejq[count] nc²] their Jacobians, element e's block [(rows nc)²] at
                        fr_hb_block_of */
-    double *R;    /* [nq + 1] residual (continuation: the arclength equation last) */
-    double *A;    /* [(nq + 1)^2] Newton's matrix, LU-factored in place */
-    double *rw;   /* [nq + 1] dR/dΩ, then scratch */
-    double *dy;   /* [nq + 1] Newton's step */
-    double *qw;   /* [nq + 1] iterate (continuation: Ω last) */
-    double *qt;   /* [nq + 1] line search trial */
-    double *cont; /* [FR_HB_CONT_VECTORS (nq + 1)] the forced response's continuation's room */
-    double *qjac; /* [nq] the q of the last residual with Jacobians (the monodromy's orbit) */
-    int *piv2;    /* [nq + 1] A's row interchanges (lu.c: LAPACK's) */
+    double *R;      /* [nq + 1] residual (continuation: the arclength equation last) */
+    double *A;      /* [(nq + 1)^2] Newton's matrix, LU-factored in place */
+    double *rw;     /* [nq + 1] dR/dΩ, then scratch */
+    double *dy;     /* [nq + 1] Newton's step */
+    double *qw;     /* [nq + 1] iterate (continuation: Ω last) */
+    double *qt;     /* [nq + 1] line search trial */
+    double *bcol;   /* [nq + 1] the bordered matrix's column, recorded until it is formed */
+    double *brow;   /* [nq + 1] its row */
+    double *refine; /* [4 (nq + 1)] the refinement's b, x, Ĵ x and r (newton_matrix.c) */
+    double *cont;   /* [FR_HB_CONT_VECTORS (nq + 1)] the forced response's continuation's room */
+    double *qjac;   /* [nq] the q of the last residual with Jacobians (the monodromy's orbit) */
+    int *piv2;      /* [nq + 1] A's row interchanges (lu.c: LAPACK's) */
     /* Newton's matrix recorded (newton_matrix.c): its order, whether by the capacitance
-     * (capacitance.c's room, NULL: none yet) and whether factored; the least nq and the
-     * share of non-diagonal rows for the capacitance (FR_HB_CAPACITANCE_MIN, _SHARE) */
-    size_t newton_nd;
+     * (capacitance.c's room, NULL: none yet) and whether factored; the order of the dense LU
+     * factor A holds (0: none), its matrix's ∞-norm, and the least order at which a later
+     * matrix is solved by refinement on it (FR_HB_REFINE_MIN); the least nq and the share of
+     * non-diagonal rows for the capacitance (FR_HB_CAPACITANCE_MIN, _SHARE) */
+    size_t newton_nd, held_nd, held_min;
+    double held_norm;
     int by_capacitance, newton_factored;
     struct fr_hb_capacitance *capacitance;
     size_t capacitance_min;

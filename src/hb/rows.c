@@ -56,10 +56,10 @@ static int block_sizes(const fricreg_hb *hb, size_t cap, size_t sq, size_t count
     ok = ok && mul(2 * n, u, &t) && add(t, 2 * n, &count[2]);
     /* G: 4 H1 cap² + 4 H1 cap */
     ok = ok && mul(cap, cap, &t) && add(t, cap, &t) && mul(4 * H1, t, &count[3]);
-    /* fq, jq, A, five of Newton's vectors (R .. qt), the continuation's room, qsol, qjac:
-     * nq + sq nc² + (nq + 1)² + (5 + FR_HB_CONT_VECTORS) (nq + 1) + 2 nq */
+    /* fq, jq, A, eleven of Newton's vectors (R .. refine), the continuation's room, qsol,
+     * qjac: nq + sq nc² + (nq + 1)² + (11 + FR_HB_CONT_VECTORS) (nq + 1) + 2 nq */
     ok = ok && mul(sq, nc * nc, &t) && add(t, 3 * nq, &t) && mul(nq1, nq1, &u) && add(t, u, &t) &&
-         mul(5 + FR_HB_CONT_VECTORS, nq1, &u) && add(t, u, &count[4]);
+         mul(11 + FR_HB_CONT_VECTORS, nq1, &u) && add(t, u, &count[4]);
     for (int b = 0; ok && b < 5; b++)
         ok = mul(count[b] ? count[b] : 1, sizeof(double), &t);
     return ok && mul(nq1, sizeof(int), &t);
@@ -120,12 +120,16 @@ void fr_hb_rows_set(fricreg_hb *hb)
     hb->dql = hb->dG + 2 * H1 * m * m;
     hb->jq = hb->fq + nq;
     hb->A = hb->jq + hb->ejq[hb->count] * nc * nc;
+    hb->held_nd = 0; /* A moved, or the model changed under its factor */
     hb->R = hb->A + (nq + 1) * (nq + 1);
     hb->rw = hb->R + (nq + 1);
     hb->dy = hb->rw + (nq + 1);
     hb->qw = hb->dy + (nq + 1);
     hb->qt = hb->qw + (nq + 1);
-    hb->cont = hb->qt + (nq + 1);
+    hb->bcol = hb->qt + (nq + 1);
+    hb->brow = hb->bcol + (nq + 1);
+    hb->refine = hb->brow + (nq + 1);
+    hb->cont = hb->refine + 4 * (nq + 1);
     hb->qsol = hb->cont + FR_HB_CONT_VECTORS * (nq + 1);
     hb->qjac = hb->qsol + nq;
 }
