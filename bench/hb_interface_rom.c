@@ -31,11 +31,14 @@
  *
  * Usage: fricreg-bench-hb-interface-rom [m ...] [--load preload|liftoff]
  *        [--elements contact_3d|jenkins|jenkins_normal] [--omega 0.8|1.0] [--budget s] [--sweep] [--trace]
+ *        [--dense]
  * default m = 16 32 85 232, every load, element type and frequency. --budget stops a solve
  * without a guess after s CPU seconds (its status then the monitor's stop); --sweep continues
  * from the point at 0.8 to 1.6 through the first resonance with the defaults (points,
  * iterations, seconds; the budget holds for it too); --trace prints each Newton iteration
- * with its CPU time to stderr. Run one at a time, OPENBLAS_NUM_THREADS=1 for CPU seconds. */
+ * with its CPU time to stderr; --dense solves each Newton's matrix by its own LU
+ * (FRICREG_HB_NEWTON_DENSE: no capacitance, no refinement on an earlier factor). Run one at a
+ * time, OPENBLAS_NUM_THREADS=1 for CPU seconds. */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -67,7 +70,7 @@ static const struct load LOADS[] = {{"preload", 2.0, 1.2, 0.0}, {"liftoff", 2.0,
  * monitor prints each Newton iteration to stderr. */
 static const char *only_load, *only_elements;
 static double only_omega, budget, started;
-static int trace, sweep;
+static int trace, sweep, dense;
 
 /* Counts the Newton iterations; stops a solve past the budget of CPU seconds (0: none). */
 static int count_steps(void *user, int64_t iterations, double parameter, double residual)
@@ -188,6 +191,8 @@ static fricreg_hb *build(size_t m, const struct load *ld, enum kind k, long *ste
         status = fricreg_hb_add_elements(hb, fricreg_element_lookup(KIND_NAMES[k]), me, n, J, p);
     if (status == FRICREG_OK)
         status = fricreg_hb_set_monitor(hb, count_steps, steps);
+    if (status == FRICREG_OK && dense)
+        status = fricreg_hb_set_newton_solver(hb, FRICREG_HB_NEWTON_DENSE);
     if (status != FRICREG_OK) {
         fprintf(stderr, "set-up failed (%d): %s\n", status,
                 hb ? fricreg_hb_errmsg(hb) : "no memory");
@@ -285,6 +290,8 @@ int main(int argc, char **argv)
             only_elements = argv[++a];
         else if (strcmp(argv[a], "--sweep") == 0)
             sweep = 1;
+        else if (strcmp(argv[a], "--dense") == 0)
+            dense = 1;
         else if (strcmp(argv[a], "--budget") == 0 && a + 1 < argc)
             budget = atof(argv[++a]);
         else if (strcmp(argv[a], "--omega") == 0 && a + 1 < argc)

@@ -625,7 +625,7 @@ enum fricreg_hb_newton_solver {
  *  matrix first by iterative refinement on the LU factor of the last one factored, when of
  *  its order (the iterations' and the continuation's points' matrices differ little):
  *  x <- x + A_held^-1 (b - A x), A applied without forming it, until |b - A x| <= 1e-12 |b|
- *  or the product's rounding, at most 20 corrections each shrinking the residual by half;
+ *  (∞-norms) in at most 20 corrections, each shrinking the residual by half;
  *  else the matrix's own LU (2 nq³/3 flops), which is held next. A public solve or
  *  continuation starts without a held factor, so the same call gives the same bits. Measured
  *  on sweeps of an interface ROM lifting off, the same points: 85 contacts (order 1786) 65 s

@@ -170,11 +170,10 @@ struct fricreg_hb {
     int *piv2;      /* [nq + 1] A's row interchanges (lu.c: LAPACK's) */
     /* Newton's matrix recorded (newton_matrix.c): its order, whether by the capacitance
      * (capacitance.c's room, NULL: none yet) and whether factored; the order of the dense LU
-     * factor A holds (0: none), its matrix's ∞-norm, and the least order at which a later
-     * matrix is solved by refinement on it (FR_HB_REFINE_MIN); the least nq and the share of
-     * non-diagonal rows for the capacitance (FR_HB_CAPACITANCE_MIN, _SHARE) */
+     * factor A holds (0: none), and the least order at which a later matrix is solved by
+     * refinement on it (FR_HB_REFINE_MIN); the least nq and the share of non-diagonal rows
+     * for the capacitance (FR_HB_CAPACITANCE_MIN, _SHARE) */
     size_t newton_nd, held_nd, held_min;
-    double held_norm;
     int by_capacitance, newton_factored;
     struct fr_hb_capacitance *capacitance;
     size_t capacitance_min;

@@ -10,7 +10,6 @@
  * product with the matrix (unformed) and one solve with the factor an iteration, where the
  * LU of its own costs 2 nd³/3. It is formed and factored only where the refinement does not
  * converge. */
-#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -19,7 +18,7 @@
 #include "newton_matrix.h"
 #include "residual.h"
 
-/* The recorded matrix formed into A (over the factor held there), its ∞-norm in held_norm. */
+/* The recorded matrix formed into A (over the factor held there). */
 static void dense(fricreg_hb *hb)
 {
     size_t nq = hb->nq, nd = hb->newton_nd;
@@ -29,15 +28,6 @@ static void dense(fricreg_hb *hb)
         for (size_t j = 0; j < nq; j++)
             hb->A[j * nd + nq] = hb->bcol[j];
         memcpy(hb->A + nq * nd, hb->brow, nd * sizeof(double));
-    }
-    hb->held_norm = 0.0;
-    if (nd < hb->held_min)
-        return; /* never refined on */
-    for (size_t i = 0; i < nd; i++) {
-        double s = 0.0;
-        for (size_t j = 0; j < nd; j++)
-            s += fabs(hb->A[i * nd + j]);
-        hb->held_norm = fmax(hb->held_norm, s);
     }
 }
 
@@ -80,12 +70,12 @@ static double norm_inf(const double *x, size_t n)
 
 /* The refinement's bounds: at most REFINE_ITERATIONS corrections, each shrinking |r| by
  * REFINE_RATE at least (slower: the matrices differ too much, and the matrix's own LU is
- * cheaper); converged at |r| <= REFINE_TOL |b|, or within the product's rounding,
- * REFINE_FLOOR u (|A| |x| + |b|) (∞-norms, |A| the held matrix's). */
+ * cheaper; measured at 85 contacts, 0.8 and 40 moved the sweep's points, 150 to 197);
+ * converged at |r|∞ <= REFINE_TOL |b|∞, else the LU (where rounding keeps the residual above
+ * it, an ill-conditioned matrix). */
 #define REFINE_ITERATIONS 20
 #define REFINE_RATE 0.5
 #define REFINE_TOL 1e-12
-#define REFINE_FLOOR 64.0
 
 /* sol = A⁻¹ rhs by refinement on the factor held: 1 converged, 0 not (sol untouched). */
 static int refine(fricreg_hb *hb, const double *rhs, double *sol)
@@ -101,8 +91,7 @@ static int refine(fricreg_hb *hb, const double *rhs, double *sol)
         for (size_t j = 0; j < nd; j++)
             r[j] = b[j] - r[j];
         double rn = norm_inf(r, nd);
-        if (rn <= REFINE_TOL * bn ||
-            rn <= REFINE_FLOOR * DBL_EPSILON * (hb->held_norm * norm_inf(x, nd) + bn)) {
+        if (rn <= REFINE_TOL * bn) {
             memcpy(sol, x, nd * sizeof(double));
             return 1;
         }
