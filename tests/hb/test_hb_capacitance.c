@@ -118,6 +118,28 @@ static double distance(const double *a, const double *b, size_t n, double *scale
     return d;
 }
 
+/* The branch from 0.3 to 2.5 continued on hb: its points, the last one's rms into rms[N]. */
+static size_t branch_to_end(fricreg_hb *hb, double *rms)
+{
+    double w;
+    ck_assert_msg(fricreg_hb_continue(hb, 0.3, 2.5, hb->nq, NULL) == FRICREG_OK, "%s",
+                  fricreg_hb_errmsg(hb));
+    size_t points = fricreg_hb_points(hb);
+    ck_assert_int_eq(fricreg_hb_point(hb, points - 1, &w, N, rms), FRICREG_OK);
+    ck_assert_double_eq(w, 2.5);
+    return points;
+}
+
+/* Two branches to the same end: their last points agree to 1e-8 of the response, and the
+ * points number alike within 10 % (more than 20). */
+static void branches_alike(const size_t points[2], double rms[2][N])
+{
+    double scale;
+    ck_assert_double_le(distance(rms[1], rms[0], N, &scale), 1e-8 * scale);
+    ck_assert_uint_gt(points[0], 20);
+    ck_assert_double_le(fabs((double)points[1] - (double)points[0]), 0.1 * (double)points[0]);
+}
+
 START_TEST(against_dense)
 {
     double level = LEVELS[_i / 2];
@@ -172,22 +194,15 @@ START_TEST(continuation_alike)
 {
     double level = LEVELS[_i + 2];
     fricreg_hb *hb[2] = {chain(level), chain(level)};
-    double rms[2][N], w[2];
+    double rms[2][N];
     size_t points[2];
     for (int k = 0; k < 2; k++) {
         ck_assert_int_eq(fricreg_hb_set_newton_solver(hb[k], k ? FRICREG_HB_NEWTON_CAPACITANCE
                                                                : FRICREG_HB_NEWTON_DENSE),
                          FRICREG_OK);
-        ck_assert_msg(fricreg_hb_continue(hb[k], 0.3, 2.5, hb[k]->nq, NULL) == FRICREG_OK, "%s",
-                      fricreg_hb_errmsg(hb[k]));
-        points[k] = fricreg_hb_points(hb[k]);
-        ck_assert_int_eq(fricreg_hb_point(hb[k], points[k] - 1, &w[k], N, rms[k]), FRICREG_OK);
-        ck_assert_double_eq(w[k], 2.5);
+        points[k] = branch_to_end(hb[k], rms[k]);
     }
-    double scale;
-    ck_assert_double_le(distance(rms[1], rms[0], N, &scale), 1e-8 * scale);
-    ck_assert_uint_gt(points[0], 20);
-    ck_assert_double_le(fabs((double)points[1] - (double)points[0]), 0.1 * (double)points[0]);
+    branches_alike(points, rms);
     fricreg_hb_free(hb[0]);
     fricreg_hb_free(hb[1]);
 }
@@ -297,22 +312,15 @@ END_TEST
 START_TEST(refined_alike)
 {
     fricreg_hb *hb[2] = {chain(LEVELS[4]), chain(LEVELS[4])};
-    double rms[2][N], w[2];
+    double rms[2][N];
     size_t points[2];
     for (int k = 0; k < 2; k++) {
         ck_assert_int_eq(fricreg_hb_set_newton_solver(hb[k], FRICREG_HB_NEWTON_DENSE), FRICREG_OK);
         ck_assert_uint_eq(hb[k]->held_min, SIZE_MAX);
         hb[k]->held_min = k ? 0 : SIZE_MAX;
-        ck_assert_msg(fricreg_hb_continue(hb[k], 0.3, 2.5, hb[k]->nq, NULL) == FRICREG_OK, "%s",
-                      fricreg_hb_errmsg(hb[k]));
-        points[k] = fricreg_hb_points(hb[k]);
-        ck_assert_int_eq(fricreg_hb_point(hb[k], points[k] - 1, &w[k], N, rms[k]), FRICREG_OK);
-        ck_assert_double_eq(w[k], 2.5);
+        points[k] = branch_to_end(hb[k], rms[k]);
     }
-    double scale;
-    ck_assert_double_le(distance(rms[1], rms[0], N, &scale), 1e-8 * scale);
-    ck_assert_uint_gt(points[0], 20);
-    ck_assert_double_le(fabs((double)points[1] - (double)points[0]), 0.1 * (double)points[0]);
+    branches_alike(points, rms);
     /* the refinement served: the branch moved by rounding at least */
     ck_assert(points[1] != points[0] || memcmp(rms[1], rms[0], sizeof rms[0]) != 0);
     fricreg_hb_free(hb[0]);
