@@ -4,9 +4,10 @@
  * through the modes of (K, M) (modal.c), their solves Y_h = D_h^-1 [J^T | P_h], and the
  * condensation on the elements:
  * G_h = J Y_h (the receptance between the elements' coordinates), ql_h = J D_h^-1 P_h (their
- * response with the elements removed), and with deriv their Ω derivatives,
- * d(J D^-1 B)/dΩ = −(J D^-1) D' (D^-1 B), where J D^-1 = (D^-1 J^T)^T because M, C, K (so D)
- * are symmetric: no second solve. Every pivot is checked before a solve divides by it. */
+ * response with the elements removed), and the Ω derivatives of their products,
+ * d(J D^-1 B)/dΩ c = −(J D^-1) D' (D^-1 B c), where J D^-1 = (D^-1 J^T)^T because M, C, K (so
+ * D) are symmetric: no second solve, and no matrix dG_h/dΩ (a product with a vector c costs
+ * O(n m + n²) a harmonic, the matrix O(n m²)). Every pivot is checked before a solve divides by it. */
 #include <math.h>
 #include <string.h>
 
@@ -160,15 +161,12 @@ void fr_hb_project(const fricreg_hb *hb, const double *left, const double *B, do
     }
 }
 
-/* Z = D_h' Y_h, D_h' = dD_h/dΩ = −2 h² Ω M + i h C_d (C_d the damping in force:
- * c_C C + c_K K + c_M M), by BLAS on Y_h as the real n × 2 (m + 1) matrix of its interleaved
- * parts (M, K, C are real): Z = C_d Y_h, then i h Z, then Z += −2 h² Ω M Y_h. Row-major
- * products A Y are LAPACK's column-major (A Y)^T = Y^T A^T. */
-static void derivative_times_y(fricreg_hb *hb, int h, double omega)
+/* z [n] = D_h' y [n] (complex), D_h' = dD_h/dΩ = −2 h² Ω M + i h C_d (C_d the damping in
+ * force: c_C C + c_K K + c_M M), by BLAS on y's interleaved parts as a real n × 2 matrix (M, K,
+ * C are real and symmetric): z = C_d y, then i h z, then z += −2 h² Ω M y. */
+static void derivative_times(fricreg_hb *hb, int h, double omega, const double *y, double *z)
 {
-    size_t n = hb->n, w = hb->m + 1;
-    int rows = (int)n, cols = (int)(2 * w);
-    const double *Y = hb->Y + 2 * (size_t)h * n * w;
+    int rows = (int)hb->n, two = 2;
     double cm = -hb->xi, ck = 0.0, cc = 0.0, beta = 0.0, one = 1.0;
     if (!hb->no_c && hb->rayleigh) {
         cm += hb->a0;
@@ -180,30 +178,84 @@ static void derivative_times_y(fricreg_hb *hb, int h, double omega)
     for (int t = 0; t < 3; t++) {
         if (coef[t] == 0.0)
             continue;
-        dgemm_("N", "N", &cols, &rows, &rows, &coef[t], Y, &cols, A[t], &rows, &beta, hb->Z, &cols,
-               1, 1);
+        dgemm_("N", "N", &two, &rows, &rows, &coef[t], y, &two, A[t], &rows, &beta, z, &two, 1, 1);
         beta = 1.0;
     }
     if (beta == 0.0)
-        memset(hb->Z, 0, 2 * n * w * sizeof(double));
-    for (size_t k = 0; k < n * w; k++) { /* i h Z */
-        double re = hb->Z[2 * k];
-        hb->Z[2 * k] = -h * hb->Z[2 * k + 1];
-        hb->Z[2 * k + 1] = h * re;
+        memset(z, 0, 2 * hb->n * sizeof(double));
+    for (size_t k = 0; k < hb->n; k++) { /* i h z */
+        double re = z[2 * k];
+        z[2 * k] = -h * z[2 * k + 1];
+        z[2 * k + 1] = h * re;
     }
     double a = -2.0 * h * h * omega;
-    dgemm_("N", "N", &cols, &rows, &rows, &a, Y, &cols, hb->M, &rows, &one, hb->Z, &cols, 1, 1);
+    dgemm_("N", "N", &two, &rows, &rows, &a, y, &two, hb->M, &rows, &one, z, &two, 1, 1);
 }
 
-/* dG_h = −Y_J^T Z_J and dql_h = −Y_J^T z (Y_J, Z_J: the first m columns of Y_h and Z = D_h' Y_h,
- * z the last), by zgemm and zgemv (not conjugated): the row-major dG is the column-major
- * (−Z_J^T Y_J), and the row-major n × (m + 1) Y, Z are column-major (m + 1) × n. */
-static void project_derivative(fricreg_hb *hb, const double *Y, double *dG, double *dq)
+/* res = −Y_J^T D_h' y (complex, element e at res + e stride doubles, e < m) for y [n]
+ * (complex) in hb->Z's first 2n doubles: where y = Y_h c, the Ω derivative of the
+ * condensation's product J Y_h c with c [m + 1] (the elements' forces and the load), as
+ * dD_h^-1/dΩ = −D_h^-1 D_h' D_h^-1 and J D_h^-1 = Y_J^T (D_h symmetric); hb->Z's next 2n
+ * doubles are scratch. */
+static void derivative_apply(fricreg_hb *hb, int h, double omega, double *res, size_t stride)
 {
-    int m = (int)hb->m, n = (int)hb->n, w = m + 1, inc = 1;
-    const double minus[2] = {-1.0, 0.0}, zero[2] = {0.0, 0.0};
-    zgemm_("N", "T", &m, &m, &n, minus, hb->Z, &w, Y, &w, zero, dG, &m, 1, 1);
-    zgemv_("N", &m, &n, minus, Y, &w, hb->Z + 2 * (size_t)m, &w, zero, dq, &inc, 1);
+    size_t n = hb->n, m = hb->m, w = m + 1;
+    const double *Y = hb->Y + 2 * (size_t)h * n * w, *y = hb->Z;
+    double *z = hb->Z + 2 * n;
+    if (hb->sparse)
+        fr_hb_sparse_derivative(hb, h, omega, y, z);
+    else
+        derivative_times(hb, h, omega, y, z);
+    for (size_t e = 0; e < m; e++)
+        res[e * stride] = res[e * stride + 1] = 0.0;
+    for (size_t k = 0; k < n; k++) /* −Y_J^T z, row k of Y contiguous */
+        for (size_t e = 0; e < m; e++)
+            cmac(res + e * stride, -1.0, Y[2 * (k * w + e)], Y[2 * (k * w + e) + 1], z[2 * k],
+                 z[2 * k + 1]);
+}
+
+/* dql_h = −Y_J^T D_h' Y_P (Y_P the last column of Y_h) into dq [m] (complex). */
+static void load_derivative(fricreg_hb *hb, int h, double omega, double *dq)
+{
+    size_t n = hb->n, w = hb->m + 1;
+    const double *Y = hb->Y + 2 * (size_t)h * n * w;
+    for (size_t k = 0; k < n; k++) {
+        hb->Z[2 * k] = Y[2 * (k * w + hb->m)];
+        hb->Z[2 * k + 1] = Y[2 * (k * w + hb->m) + 1];
+    }
+    derivative_apply(hb, h, omega, dq, 2);
+}
+
+/* dR/dΩ at harmonic h from y = Y_h c, c = [F_h; −load] (F = fa − i fb, the forces' complex
+ * form; derivative_apply takes its derivative), in (R)'s real form:
+ * R_a = Re, R_b = −Im of the complex derivative (fr_hb_apply's). */
+static void domega_harmonic(fricreg_hb *hb, int h, double *out)
+{
+    size_t n = hb->n, m = hb->m, w = m + 1, nc = hb->nc, ca = 2 * (size_t)h - 1;
+    const double *Y = hb->Y + 2 * (size_t)h * n * w, *f = hb->fq;
+    double load = fr_hb_load(hb), *y = hb->Z;
+    for (size_t k = 0; k < n; k++) {
+        const double *row = Y + 2 * k * w;
+        double yr = -load * row[2 * m], yi = -load * row[2 * m + 1];
+        for (size_t e = 0; e < m; e++) { /* (gr + i gi)(fa − i fb) */
+            double fa = f[e * nc + ca], fb = f[e * nc + ca + 1];
+            yr += row[2 * e] * fa + row[2 * e + 1] * fb;
+            yi += row[2 * e + 1] * fa - row[2 * e] * fb;
+        }
+        y[2 * k] = yr;
+        y[2 * k + 1] = yi;
+    }
+    derivative_apply(hb, h, hb->factored_omega, out + ca, nc);
+    for (size_t e = 0; e < m; e++)
+        out[e * nc + ca + 1] = -out[e * nc + ca + 1];
+}
+
+void fr_hb_domega(fricreg_hb *hb, double *out)
+{
+    for (size_t e = 0; e < hb->m; e++) /* D_0 = K: no Ω */
+        out[e * hb->nc] = 0.0;
+    for (int h = 1; h <= hb->H; h++)
+        domega_harmonic(hb, h, out);
 }
 
 /* The solves and the condensation are finite: a model, element or excitation scale near the
@@ -231,19 +283,16 @@ int fr_hb_factor(fricreg_hb *hb, const char *fn, double omega, int deriv)
     hb->factored_omega = NAN;
     int status = FRICREG_OK, modal = fr_hb_modal_ready(hb);
     for (int h = 0; h <= hb->H; h++) {
-        if (h == 0 && !hb->sparse && hb->k_kept == hb->model_serial + 1) {
-            if (deriv) { /* D_0 = K: Y_0, G_0 kept, their Ω derivatives 0 */
-                memset(hb->dG, 0, 2 * m * m * sizeof(double));
-                memset(hb->dql, 0, 2 * m * sizeof(double));
-            }
-            continue;
-        }
+        double *dq = hb->dql + 2 * (size_t)h * m;
+        if (deriv && h == 0) /* D_0 = K: its Ω derivative 0 */
+            memset(dq, 0, 2 * m * sizeof(double));
+        if (h == 0 && !hb->sparse && hb->k_kept == hb->model_serial + 1)
+            continue; /* Y_0, G_0 kept */
         double *G = hb->G + 2 * (size_t)h * m * m, *q = hb->ql + 2 * (size_t)h * m;
-        double *dG = hb->dG + 2 * (size_t)h * m * m, *dq = hb->dql + 2 * (size_t)h * m;
         if (hb->sparse) {
             status = fr_hb_sparse_solve(hb, fn, h, omega);
         } else if (modal) {
-            status = fr_hb_modal_solve(hb, fn, h, omega, deriv && h > 0 ? dG : NULL, dq);
+            status = fr_hb_modal_solve(hb, fn, h, omega);
         } else {
             status = factor_one(hb, fn, h, omega);
             if (status == FRICREG_OK)
@@ -251,22 +300,11 @@ int fr_hb_factor(fricreg_hb *hb, const char *fn, double omega, int deriv)
         }
         if (status != FRICREG_OK)
             return status;
-        const double *Y = hb->Y + 2 * (size_t)h * n * w;
-        fr_hb_project(hb, NULL, Y, 1.0, G, q);
+        fr_hb_project(hb, NULL, hb->Y + 2 * (size_t)h * n * w, 1.0, G, q);
         if (h == 0 && !hb->sparse)
             hb->k_kept = hb->model_serial + 1;
-        if (!deriv || (modal && h > 0)) /* the modes' solve wrote dG, dq */
-            continue;
-        if (h == 0) {
-            memset(dG, 0, 2 * m * m * sizeof(double));
-            memset(dq, 0, 2 * m * sizeof(double));
-            continue;
-        }
-        if (hb->sparse)
-            fr_hb_sparse_derivative(hb, h, omega);
-        else
-            derivative_times_y(hb, h, omega);
-        project_derivative(hb, Y, dG, dq);
+        if (deriv && h > 0)
+            load_derivative(hb, h, omega, dq);
     }
     if ((status = check_finite(hb, fn, omega)) != FRICREG_OK)
         return status;

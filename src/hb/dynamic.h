@@ -5,8 +5,8 @@
 
 #include "hb_internal.h"
 
-/* Factors D_h(omega) for h = 0..H and forms Y, G, ql (and dG, dql when deriv); keeps them
- * while omega stays. FRICREG_OK or FRICREG_ESINGULAR (message recorded, with fn). */
+/* Factors D_h(omega) for h = 0..H and forms Y, G, ql (and dql when deriv); keeps them while
+ * omega stays. FRICREG_OK or FRICREG_ESINGULAR (message recorded, with fn). */
 int fr_hb_factor(fricreg_hb *hb, const char *fn, double omega, int deriv);
 
 /* The largest over h of D_h's 1-norm condition number at the factored frequency, estimated
@@ -23,6 +23,11 @@ int fr_hb_condition(fricreg_hb *hb, const char *fn, double *kappa);
  * the condensation J Y_h, or with left = Y_h the derivative −Y_h^T D' Y_h from Z = D' Y_h. */
 void fr_hb_project(const fricreg_hb *hb, const double *left, const double *B, double s, double *G,
                    double *q);
+
+/* dR/dΩ of (R) at the forces fq: (dG/dΩ) F − load dql/dΩ, into out[nq], at the factored Ω
+ * (Y_h's): −Y_J^T D_h' (Y_h [F; −load]) a harmonic, products with vectors (O(n m + n²) a
+ * harmonic; no dG/dΩ is formed), residual.c's real form. */
+void fr_hb_domega(fricreg_hb *hb, double *out);
 
 /* D_h(omega)^-1 B in place for nrhs complex right-hand sides B[nrhs n] (each contiguous), with
  * the damping in force (hb->xi, no_c): a dense model's D_h factored again into hb->D (the

@@ -112,7 +112,7 @@ struct fricreg_hb {
 
     /* The factors of one frequency (dynamic.c), valid while factored_omega is that Ω. */
     double factored_omega;       /* NaN: none */
-    int factored_deriv;          /* the Ω derivatives dG, dql are there too */
+    int factored_deriv;          /* the Ω derivative dql is there too */
     unsigned long factor_serial; /* counts the factorizations: G_h's identity */
     unsigned long k_kept;        /* model_serial + 1 while Y_0, G_0 hold K's solves (D_0 = K
                                     at every Ω; dense models), 0: not */
@@ -120,11 +120,10 @@ struct fricreg_hb {
     int *piv;                    /* [n] its row interchanges (lu.c: LAPACK's) */
     double *Y;    /* [(H+1) n (m+1)] complex: D_h^-1 [J^T | P_h], row k of harmonic h at
                      Y[(h n + k)(m+1)], column m the load (0 but for h = 1) */
-    double *Z;    /* [n (m+1)] complex scratch: D_h' Y_h, or (sparse.c) the right-hand
-                              sides of Y_h, solved in place */
+    double *Z;    /* [n (m+2)] complex scratch: y and D_h' y (dynamic.c), or (sparse.c) the
+                     right-hand sides of Y_h, solved in place */
     double *G;    /* [(H+1) m m] complex: G_h = J D_h^-1 J^T */
     double *ql;   /* [(H+1) m] complex: J D_h^-1 P_h */
-    double *dG;   /* [(H+1) m m] complex: dG_h/dΩ */
     double *dql;  /* [(H+1) m] complex: dql_h/dΩ */
     double *colw; /* [n] complex scratch: one column */
     /* The modes of (K, M) (modal.c), for a dense model with proportional damping: modes

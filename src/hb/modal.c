@@ -6,9 +6,9 @@
  *     D_h^-1 = Φ diag(1/d_k) Φ^T,   d_k = λ_k (1 + i w a1) + i w a0 − w²,   w = hΩ,
  *
  * (the nonlinear modes' damping −xi M adds −i w xi; their modal option drops a0 and a1), so a
- * frequency costs one real product Φ X a harmonic (4 n² (m + 1) flops, and as much again for
- * the Ω derivative dY_h/dΩ = Φ diag(−d_k'/d_k²) Φ^T [J^T | P_h]), where the LU costs
- * 8 n³/3 + 8 n² (m + 1) and the derivative 12 n² (m + 1) + 8 m² n more. The same Y_h to
+ * frequency costs one real product Φ X a harmonic (4 n² (m + 1) flops), where the LU costs
+ * 8 n³/3 + 8 n² (m + 1). The Ω derivatives are dynamic.c's products with vectors, from Y_h as
+ * the LU's. The same Y_h to
  * rounding: M's condition number bounds how far the modes' solves can leave the LU's, so the
  * modes serve only where M's reciprocal condition number is at least FR_HB_MODAL_MIN_RCOND. */
 #include <complex.h>
@@ -162,19 +162,7 @@ static void from_modes(fricreg_hb *hb, const double *X, double *out)
            1);
 }
 
-/* The elements' rows of Φ X as dynamic.c lays out G_h and ql_h: G [m m] from X's first m
- * columns and q [m] from its last (complex), each by one dgemm with J Φ, m rows where Φ X has
- * n. Column-major, G^T = X_J^T (J Φ)^T with X_J^T the real 2m × n of those columns' parts
- * (leading dimension 2 (m + 1)). */
-static void rows_from_modes(fricreg_hb *hb, const double *X, double *G, double *q)
-{
-    int m = (int)hb->m, n = (int)hb->n, ld = 2 * (m + 1), pair = 2, cols = 2 * m;
-    double one = 1.0, zero = 0.0;
-    dgemm_("N", "T", &cols, &m, &n, &one, X, &ld, hb->jmodes, &m, &zero, G, &cols, 1, 1);
-    dgemm_("N", "T", &pair, &m, &n, &one, X + cols, &ld, hb->jmodes, &m, &zero, q, &pair, 1, 1);
-}
-
-int fr_hb_modal_solve(fricreg_hb *hb, const char *fn, int h, double omega, double *dG, double *dq)
+int fr_hb_modal_solve(fricreg_hb *hb, const char *fn, int h, double omega)
 {
     size_t n = hb->n, w = hb->m + 1;
     double cm, ck, wh = h * omega, scale = 0.0, least = INFINITY;
@@ -196,15 +184,5 @@ int fr_hb_modal_solve(fricreg_hb *hb, const char *fn, int h, double omega, doubl
                        fn, h == 0 ? "K" : "the dynamic stiffness D_h", omega, at, least, scale);
     scale_modal(hb, h, s, hb->xmodal);
     from_modes(hb, hb->xmodal, hb->Y + 2 * (size_t)h * n * w);
-    if (dG == NULL)
-        return FRICREG_OK;
-    /* d(1/d_k)/dΩ = −d_k' s_k², d_k' = h (i c_k − 2 w): X's row k times −d_k' s_k */
-    for (size_t k = 0; k < n; k++) {
-        double complex f = -h * (I * (cm + ck * hb->lambda[k]) - 2.0 * wh) * s[k];
-        double complex *row = (double complex *)(hb->xmodal + 2 * k * w);
-        for (size_t c = 0; c < w; c++)
-            row[c] *= f;
-    }
-    rows_from_modes(hb, hb->xmodal, dG, dq);
     return FRICREG_OK;
 }

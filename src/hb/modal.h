@@ -18,10 +18,9 @@
 int fr_hb_modal_ready(fricreg_hb *hb);
 
 /* Y_h = Φ diag(1/d_k) Φ^T [J^T | P_h], d_k = λ_k (1 + i hΩ a1) + i hΩ (a0 − xi) − (hΩ)², into
- * hb->Y (h's block, dynamic.h's layout); with dG non-NULL also the Ω derivatives of G_h and
- * ql_h, J dY_h/dΩ, into dG [m m] and dq [m] (complex). FRICREG_OK;
+ * hb->Y (h's block, dynamic.h's layout). FRICREG_OK;
  * FRICREG_ESINGULAR where some |d_k| is below 1e-14 of the terms' scale (message with fn). */
-int fr_hb_modal_solve(fricreg_hb *hb, const char *fn, int h, double omega, double *dG, double *dq);
+int fr_hb_modal_solve(fricreg_hb *hb, const char *fn, int h, double omega);
 
 /* Frees the modes and their room. */
 void fr_hb_modal_free(fricreg_hb *hb);

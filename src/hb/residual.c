@@ -168,11 +168,6 @@ int fr_hb_residual(fricreg_hb *hb, const char *fn, const double *q, double *R, i
     return FRICREG_OK;
 }
 
-void fr_hb_domega(fricreg_hb *hb, double *out)
-{
-    fr_hb_apply(hb, hb->dG, hb->dql, fr_hb_load(hb), hb->fq, out);
-}
-
 void fr_hb_dlevel(const fricreg_hb *hb, double *out)
 {
     size_t m = hb->m, nc = hb->nc;

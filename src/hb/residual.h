@@ -18,9 +18,6 @@ int fr_hb_residual(fricreg_hb *hb, const char *fn, const double *q, double *R, i
  * dimension ld (rows and columns 0..nq-1). */
 void fr_hb_matrix(fricreg_hb *hb, const double *jac, double *A, size_t ld);
 
-/* dR/dΩ at the forces fq: dG F − dql, into out[nq] (needs the derivatives factored). */
-void fr_hb_domega(fricreg_hb *hb, double *out);
-
 /* out[nq] = G F − load ql in (R)'s real form from the forces f[nq] and a complex
  * G[(H+1) m m], ql[(H+1) m] (ql NULL: none), e.g. a derivative of the condensation. */
 void fr_hb_apply(const fricreg_hb *hb, const double *G, const double *ql, double load,

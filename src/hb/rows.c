@@ -51,11 +51,12 @@ static int block_sizes(const fricreg_hb *hb, size_t cap, size_t sq, size_t count
     int ok = mul(cap, nc, &nq) && add(nq, 1, &nq1) && nq1 <= INT_MAX;
     /* J: cap n + 2 n */
     ok = ok && mul(cap, n, &t) && add(t, 2 * n, &count[0]);
-    /* Y: 2 H1 n (cap + 1); Z: 2 n (cap + 1) + 2 n */
+    /* Y: 2 H1 n (cap + 1); Z: 2 n (cap + 2) (at least the 2 n complex of dynamic.c's
+     * derivatives) + 2 n */
     ok = ok && add(cap, 1, &u) && mul(2 * H1 * n, u, &count[1]);
-    ok = ok && mul(2 * n, u, &t) && add(t, 2 * n, &count[2]);
-    /* G: 4 H1 cap² + 4 H1 cap */
-    ok = ok && mul(cap, cap, &t) && add(t, cap, &t) && mul(4 * H1, t, &count[3]);
+    ok = ok && add(cap, 3, &t) && mul(2 * n, t, &count[2]);
+    /* G: 2 H1 cap² + 4 H1 cap (G, ql, dql) */
+    ok = ok && mul(cap, cap, &t) && add(t, 2 * cap, &t) && mul(2 * H1, t, &count[3]);
     /* fq, jq, A, eleven of Newton's vectors (R .. refine), the continuation's room, qsol,
      * qjac: nq + sq nc² + (nq + 1)² + (11 + FR_HB_CONT_VECTORS) (nq + 1) + 2 nq */
     ok = ok && mul(sq, nc * nc, &t) && add(t, 3 * nq, &t) && mul(nq1, nq1, &u) && add(t, u, &t) &&
@@ -114,10 +115,9 @@ void fr_hb_rows_set(fricreg_hb *hb)
     size_t m = hb->erow[hb->count], nq = m * nc;
     hb->m = m;
     hb->nq = nq;
-    hb->colw = hb->Z + 2 * n * (m + 1);
+    hb->colw = hb->Z + 2 * n * (m + 2);
     hb->ql = hb->G + 2 * H1 * m * m;
-    hb->dG = hb->ql + 2 * H1 * m;
-    hb->dql = hb->dG + 2 * H1 * m * m;
+    hb->dql = hb->ql + 2 * H1 * m;
     hb->jq = hb->fq + nq;
     hb->A = hb->jq + hb->ejq[hb->count] * nc * nc;
     hb->held_nd = 0; /* A moved, or the model changed under its factor */

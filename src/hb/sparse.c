@@ -484,22 +484,14 @@ int fr_hb_sparse_condition(fricreg_hb *hb, const char *fn, int h, double omega, 
     return FRICREG_OK;
 }
 
-void fr_hb_sparse_derivative(fricreg_hb *hb, int h, double omega)
+void fr_hb_sparse_derivative(fricreg_hb *hb, int h, double omega, const double *y, double *z)
 {
-    size_t n = hb->n, w = hb->m + 1;
-    const double *Y = hb->Y + 2 * (size_t)h * n * w;
-    memset(hb->Z, 0, 2 * n * w * sizeof(double));
-    for (size_t j = 0; j < n; j++)
+    memset(z, 0, 2 * hb->n * sizeof(double));
+    for (size_t j = 0; j < hb->n; j++)
         for (int64_t p = hb->Dp[j]; p < hb->Dp[j + 1]; p++) {
             size_t i = (size_t)hb->Di[p];
             double re = -2.0 * h * h * omega * hb->vM[p], im = h * damping(hb, (size_t)p);
-            if (re == 0.0 && im == 0.0)
-                continue;
-            for (size_t c = 0; c < w; c++) {
-                const double *y = Y + 2 * (j * w + c);
-                double *z = hb->Z + 2 * (i * w + c);
-                z[0] += re * y[0] - im * y[1];
-                z[1] += re * y[1] + im * y[0];
-            }
+            z[2 * i] += re * y[2 * j] - im * y[2 * j + 1];
+            z[2 * i + 1] += re * y[2 * j + 1] + im * y[2 * j];
         }
 }

@@ -22,8 +22,8 @@ int fr_hb_sparse_condition(fricreg_hb *hb, const char *fn, int h, double omega, 
 int fr_hb_sparse_solve_many(fricreg_hb *hb, const char *fn, int h, double omega, size_t nrhs,
                             double *B);
 
-/* Z = D_h' Y_h on the sparse pattern, D_h' = −2 h² Ω M + i h C. */
-void fr_hb_sparse_derivative(fricreg_hb *hb, int h, double omega);
+/* z [n] = D_h' y [n] (complex) on the sparse pattern, D_h' = −2 h² Ω M + i h C. */
+void fr_hb_sparse_derivative(fricreg_hb *hb, int h, double omega, const double *y, double *z);
 
 /* Switches a dense driver to the sparse model (its M, C, K converted) and sets the model's
  * defaults for a sparse-only one; frees the sparse state. */

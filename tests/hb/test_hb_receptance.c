@@ -2,8 +2,9 @@
 /* test_hb_receptance.c — Check suite for the receptances solved through the modes of (K, M)
  * (src/hb/modal.c, fricreg_hb_set_receptance), white box where it compares G_h: on a chain of
  * 210 dofs with a consistent (tridiagonal) mass, Rayleigh damping, a Jenkins element, a 3-D
- * contact and a Jenkins element with lift-off, the modes' Y_h, G_h, J D_h^-1 P_h and their Ω
- * derivatives agree with LAPACK's LU of each D_h to 1e-10 of their scale, a solve and a
+ * contact and a Jenkins element with lift-off, the modes' Y_h, G_h, J D_h^-1 P_h, its Ω
+ * derivative and (R)'s Ω derivative agree with LAPACK's LU of each D_h to 1e-10 of their
+ * scale, and (R)'s Ω derivative is the central difference's to 1e-6 either way; a solve and a
  * continuation to 1e-8; the automatic choice is the modes' bit for bit at 210 dofs and the
  * LU's below 200; the LU serves, bit for bit, where the modes cannot (a damping matrix, a mass
  * matrix of reciprocal condition number below 1e-6), and a zero damping matrix takes the
@@ -18,6 +19,7 @@
 #include "fricreg_hb.h"
 #include "hb/dynamic.h"
 #include "hb/hb_internal.h"
+#include "hb/residual.h"
 
 #define H 3
 #define N 210
@@ -78,6 +80,33 @@ static fricreg_hb *chain(size_t n, double tiny, int method)
     return hb;
 }
 
+/* The chain of n dofs on the sparse path: its M and K from compressed sparse columns (every
+ * non-zero of chain_matrices'), set after the dense ones. */
+static fricreg_hb *sparse_chain(size_t n)
+{
+    fricreg_hb *hb = chain(n, 1.0, FRICREG_HB_RECEPTANCE_LU);
+    double *M = malloc(4 * n * n * sizeof(double)), *K = M + n * n, *v = K + n * n;
+    int64_t *ptr = malloc((n + 1 + n * n) * sizeof(int64_t)), *ind = ptr + n + 1;
+    chain_matrices(n, 1.0, M, K);
+    for (int which = 0; which < 2; which++) {
+        const double *A = which == 0 ? M : K;
+        int64_t nz = 0;
+        for (size_t j = 0; j < n; j++) {
+            ptr[j] = nz;
+            for (size_t i = 0; i < n; i++)
+                if (A[i * n + j] != 0.0)
+                    ind[nz] = (int64_t)i, v[nz++] = A[i * n + j];
+        }
+        ptr[n] = nz;
+        int status = which == 0 ? fricreg_hb_set_mass_csc(hb, n, 0, ptr, ind, v)
+                                : fricreg_hb_set_stiffness_csc(hb, n, 0, ptr, ind, v);
+        ck_assert_int_eq(status, FRICREG_OK);
+    }
+    free(M), free(ptr);
+    ck_assert_int_ne(hb->sparse, 0);
+    return hb;
+}
+
 /* max |a − b| over count doubles, and *scale their largest |b|. */
 static double distance(const double *a, const double *b, size_t count, double *scale)
 {
@@ -99,7 +128,26 @@ static void blocks_agree(const char *what, const double *modes, const double *lu
     }
 }
 
-/* The modes' Y_h, G_h, ql_h, dG_h/dΩ, dql_h/dΩ against the LU's at Ω (every harmonic). */
+/* A point q[nq] of the chain's coefficients where the elements slip and the contact lifts
+ * off at part of the period (amplitudes up to 0.3). */
+static void some_point(size_t nq, double *q)
+{
+    for (size_t j = 0; j < nq; j++)
+        q[j] = 0.3 * sin(1.0 + 0.7 * (double)j) / (double)(1 + j % (2 * H + 1));
+}
+
+/* dR/dΩ (fr_hb_domega) at q, at OMEGA factored with its derivatives, into out[nq]. */
+static void domega_at(fricreg_hb *hb, const double *q, double *out)
+{
+    double *R = calloc(hb->nq, sizeof(double));
+    ck_assert_int_eq(fr_hb_factor(hb, "test", OMEGA, 1), FRICREG_OK);
+    ck_assert_int_eq(fr_hb_residual(hb, "test", q, R, 0), FRICREG_OK);
+    fr_hb_domega(hb, out);
+    free(R);
+}
+
+/* The modes' Y_h, G_h, ql_h, dql_h/dΩ against the LU's at Ω (every harmonic), and dR/dΩ at a
+ * point where the elements slip and lift off. */
 START_TEST(agrees_with_lu)
 {
     fricreg_hb *lu = chain(N, 1.0, FRICREG_HB_RECEPTANCE_LU);
@@ -108,14 +156,49 @@ START_TEST(agrees_with_lu)
     ck_assert_int_eq(fr_hb_factor(modes, "test", OMEGA, 1), FRICREG_OK);
     ck_assert_ptr_nonnull(modes->modes);
     ck_assert_ptr_null(lu->modes);
-    size_t m = lu->m;
+    size_t m = lu->m, nq = lu->nq;
     blocks_agree("Y", modes->Y, lu->Y, 2 * N * (m + 1));
     blocks_agree("G", modes->G, lu->G, 2 * m * m);
     blocks_agree("ql", modes->ql, lu->ql, 2 * m);
-    blocks_agree("dG", modes->dG, lu->dG, 2 * m * m);
     blocks_agree("dql", modes->dql, lu->dql, 2 * m);
+    double *q = calloc(3 * nq, sizeof(double)), *a = q + nq, *b = a + nq, scale;
+    some_point(nq, q);
+    domega_at(lu, q, a);
+    domega_at(modes, q, b);
+    double d = distance(b, a, nq, &scale);
+    ck_assert_msg(scale > 0.0 && d <= 1e-10 * scale, "dR/dOmega: %g of %g", d, scale);
+    free(q);
     fricreg_hb_free(lu);
     fricreg_hb_free(modes);
+}
+END_TEST
+
+/* dR/dΩ is R's derivative in Ω at a fixed q (the forces do not depend on Ω): against the
+ * central difference (R(Ω + δ) − R(Ω − δ)) / 2δ, δ = 1e-5 Ω, whose error is δ² |d³R/dΩ³| / 6
+ * and the rounding u |R| / δ, for the LU, the modes and the sparse model (measured: 1.5e-5, 1.5e-7, 2.2e-9 of the
+ * scale at δ = 1e-4, 1e-5, 1e-6 Ω, second order until the rounding). */
+START_TEST(domega_is_the_derivative)
+{
+    const int METHODS[3] = {FRICREG_HB_RECEPTANCE_LU, FRICREG_HB_RECEPTANCE_MODES, -1};
+    for (int t = 0; t < 3; t++) { /* -1: the sparse model (KLU) */
+        fricreg_hb *hb = METHODS[t] < 0 ? sparse_chain(N) : chain(N, 1.0, METHODS[t]);
+        size_t nq = hb->nq;
+        double *q = calloc(4 * nq, sizeof(double)), *d = q + nq, *rp = d + nq, *rm = rp + nq;
+        double delta = 1e-5 * OMEGA, scale;
+        some_point(nq, q);
+        domega_at(hb, q, d);
+        ck_assert_int_eq(fr_hb_factor(hb, "test", OMEGA + delta, 0), FRICREG_OK);
+        ck_assert_int_eq(fr_hb_residual(hb, "test", q, rp, 0), FRICREG_OK);
+        ck_assert_int_eq(fr_hb_factor(hb, "test", OMEGA - delta, 0), FRICREG_OK);
+        ck_assert_int_eq(fr_hb_residual(hb, "test", q, rm, 0), FRICREG_OK);
+        for (size_t j = 0; j < nq; j++)
+            rp[j] = (rp[j] - rm[j]) / (2.0 * delta);
+        double dist = distance(d, rp, nq, &scale);
+        ck_assert_msg(scale > 0.0 && dist <= 1e-6 * scale, "method %d: %g of %g", METHODS[t], dist,
+                      scale);
+        free(q);
+        fricreg_hb_free(hb);
+    }
 }
 END_TEST
 
@@ -295,6 +378,7 @@ static Suite *suite(void)
     Suite *s = suite_create("hb_receptance");
     TCase *tc = tcase_create("core");
     tcase_add_test(tc, agrees_with_lu);
+    tcase_add_test(tc, domega_is_the_derivative);
     tcase_add_test(tc, new_mass_new_modes);
     tcase_add_test(tc, singular_on_a_mode);
     tcase_add_test(tc, choice_refused);
