@@ -8,9 +8,9 @@
  * (the nonlinear modes' damping −xi M adds −i w xi; their modal option drops a0 and a1), so a
  * frequency costs one real product Φ X a harmonic (4 n² (m + 1) flops), where the LU costs
  * 8 n³/3 + 8 n² (m + 1). The Ω derivatives are dynamic.c's products with vectors, from Y_h as
- * the LU's. The same Y_h to
- * rounding: M's condition number bounds how far the modes' solves can leave the LU's, so the
- * modes serve only where M's reciprocal condition number is at least FR_HB_MODAL_MIN_RCOND. */
+ * the LU's. The same Y_h to rounding: M's condition number bounds how far the modes' solves
+ * can leave the LU's, so the modes serve only where M's reciprocal condition number is at
+ * least FR_HB_MODAL_MIN_RCOND. */
 #include <complex.h>
 #include <math.h>
 #include <stdlib.h>

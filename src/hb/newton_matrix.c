@@ -70,7 +70,8 @@ static double norm_inf(const double *x, size_t n)
 
 /* The refinement's bounds: at most REFINE_ITERATIONS corrections, each shrinking |r| by
  * REFINE_RATE at least (slower: the matrices differ too much, and the matrix's own LU is
- * cheaper; measured at 85 contacts, 0.8 and 40 moved the sweep's points, 150 to 197);
+ * cheaper; at 85 contacts 0.8 and 40, or 30 with an early exit, gave no faster sweep: their
+ * steps fell into a kinked stretch that the default's step over, docs/hb_size.md);
  * converged at |r|∞ <= REFINE_TOL |b|∞, else the LU (where rounding keeps the residual above
  * it, an ill-conditioned matrix). */
 #define REFINE_ITERATIONS 20
